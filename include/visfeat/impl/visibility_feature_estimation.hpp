@@ -1,0 +1,148 @@
+#pragma once
+
+#include <visfeat/error.h>
+#include <visfeat/memory_budget.h>
+#include <visfeat/visibility_feature_estimation.h>
+#include <visfeat/voxel_band_from_cloud.h>
+#include <visfeat/impl/voxel_band_from_cloud.hpp>
+
+#include <pcl/common/point_tests.h>
+
+#include <omp.h>
+
+#include <chrono>
+#include <limits>
+#include <new>
+
+namespace visfeat {
+namespace detail {
+
+inline double
+millisecondsSince(std::chrono::steady_clock::time_point start)
+{
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+      .count();
+}
+
+} // namespace detail
+
+template <typename PointInT, typename PointOutT>
+bool
+VisibilityFeatureEstimation<PointInT, PointOutT>::fail(const std::string& message)
+{
+  error_ = message;
+  PCL_ERROR("[visfeat::%s::compute] %s\n", getClassName().c_str(), message.c_str());
+  return false;
+}
+
+template <typename PointInT, typename PointOutT>
+bool
+VisibilityFeatureEstimation<PointInT, PointOutT>::initCompute()
+{
+  error_.clear();
+  times_ = PhaseTimes{};
+  if (!input_)
+    return fail("no input cloud: call setInputCloud() first");
+  if (!pcl::PCLBase<PointInT>::initCompute())
+    return fail("the input cloud or its indices are invalid");
+  if (input_->empty()) {
+    this->deinitCompute();
+    return fail("the input cloud is empty");
+  }
+  if (!surface_) {
+    fake_surface_ = true;
+    surface_ = input_;
+  }
+  try {
+    const auto start = std::chrono::steady_clock::now();
+    VisibilityMap::validate(visibility_);
+    grid_ = gridForCloud(*surface_, resolution_);
+    // Refuse before allocating: the subcell mask dominates; cells are at most the points.
+    const std::size_t points = surface_->size();
+    const std::size_t cells = static_cast<std::size_t>(
+        std::min<std::uint64_t>(points, grid_.cellCount()));
+    const int threads = visibility_.threads > 0 ? visibility_.threads : omp_get_max_threads();
+    const std::uint64_t octree_bytes = std::uint64_t{160} * cells + 4 * points;
+    const std::uint64_t estimate = FreeSpace::estimateBytes(grid_) +
+                                   VoxelBand::estimateBytes(grid_, cells, points) + octree_bytes +
+                                   std::uint64_t{4} * cells * static_cast<std::uint64_t>(threads);
+    checkMemory(estimate, memory_limit_,
+                "a grid of " + std::to_string(grid_.dims.x()) + "x" +
+                    std::to_string(grid_.dims.y()) + "x" + std::to_string(grid_.dims.z()) +
+                    " cells");
+    times_.grid_ms = detail::millisecondsSince(start);
+  }
+  catch (const Error& e) {
+    this->deinitCompute();
+    return fail(e.what());
+  }
+  return true;
+}
+
+template <typename PointInT, typename PointOutT>
+void
+VisibilityFeatureEstimation<PointInT, PointOutT>::computeFeature(PointCloudOut& output)
+{
+  using Clock = std::chrono::steady_clock;
+  try {
+    auto start = Clock::now();
+    band_ = buildVoxelBand(*surface_, grid_, band_options_);
+    times_.band_ms = detail::millisecondsSince(start);
+
+    start = Clock::now();
+    free_space_ = FreeSpace(band_);
+    times_.free_space_ms = detail::millisecondsSince(start);
+
+    start = Clock::now();
+    map_ = VisibilityMap::compute(band_, free_space_, visibility_, progress_);
+    times_.visibility_ms = detail::millisecondsSince(start);
+
+    start = Clock::now();
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    const GridSpec& grid = band_.grid();
+    auto cellOf = [&](std::size_t index, const PointInT& p) -> CellId {
+      if (fake_surface_)
+        return band_.pointCell()[index];
+      // Same arithmetic as the octree's keys, so a point of the surface finds its cell.
+      CellCoord c;
+      for (int a = 0; a < 3; ++a) {
+        const double u = (static_cast<double>(p.data[a]) - grid.origin[a]) / grid.cell_size;
+        if (!(u >= 0.0 && u < grid.dims[a]))
+          return kNoCell;
+        c[a] = static_cast<int>(u);
+      }
+      return band_.find(c);
+    };
+    bool dense = true;
+    for (std::size_t i = 0; i < indices_->size(); ++i) {
+      const auto index = static_cast<std::size_t>((*indices_)[i]);
+      const PointInT& p = (*input_)[index];
+      PointOutT& out = output[i];
+      out.x = p.x;
+      out.y = p.y;
+      out.z = p.z;
+      out.label = 0;
+      out.feature_class = static_cast<std::uint8_t>(FeatureClass::kNone);
+      const CellId cell = pcl::isXYZFinite(p) ? cellOf(index, p) : kNoCell;
+      out.visibility_radius = cell == kNoCell ? nan : static_cast<float>(map_.radius(cell));
+      dense = dense && cell != kNoCell;
+    }
+    output.is_dense = dense;
+    times_.output_ms = detail::millisecondsSince(start);
+  }
+  catch (const Error& e) {
+    fail(e.what());
+    output.width = output.height = 0;
+    output.clear();
+  }
+  catch (const std::bad_alloc&) {
+    fail("out of memory: lower the resolution");
+    output.width = output.height = 0;
+    output.clear();
+  }
+}
+
+} // namespace visfeat
+
+#define PCL_INSTANTIATE_VisibilityFeatureEstimation(T, OUTT)                             \
+  template class visfeat::VisibilityFeatureEstimation<T, OUTT>;

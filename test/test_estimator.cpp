@@ -1,0 +1,344 @@
+// VisibilityFeatureEstimation<pcl::PointXYZ, PointVisibility>: per-point output,
+// NaN handling, indices, determinism, agreement with the brute-force reference through
+// the whole chain, and clear errors on bad input.
+
+#include "band_fixtures.h"
+#include "reference/brute_force.h"
+
+#include <visfeat/point_types.h>
+#include <visfeat/visibility_feature_estimation.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstring>
+#include <initializer_list>
+#include <limits>
+#include <numeric>
+#include <random>
+
+namespace {
+
+namespace ref = visfeat_test::reference;
+using Cloud = pcl::PointCloud<pcl::PointXYZ>;
+using Estimator =
+  visfeat::VisibilityFeatureEstimation<pcl::PointXYZ, visfeat::PointVisibility>;
+using Output = pcl::PointCloud<visfeat::PointVisibility>;
+using visfeat::CellId;
+using visfeat::kNoCell;
+
+const float kNaN = std::numeric_limits<float>::quiet_NaN();
+
+std::string
+lower(std::string s)
+{
+  std::transform(s.begin(), s.end(), s.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return s;
+}
+
+bool
+finite(const pcl::PointXYZ& p)
+{
+  return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
+}
+
+bool
+sameFloat(float a, float b)
+{
+  return (std::isnan(a) && std::isnan(b)) || std::memcmp(&a, &b, sizeof(float)) == 0;
+}
+
+Cloud::Ptr
+cloudWithNaNs(std::uint64_t seed, int resolution)
+{
+  Cloud::Ptr cloud(
+    new Cloud(visfeat_test::syntheticShapeCloud("cube", seed, resolution)));
+  cloud->points.insert(cloud->points.begin() + 5, pcl::PointXYZ(kNaN, kNaN, kNaN));
+  cloud->points.insert(cloud->points.begin() + 17, pcl::PointXYZ(0.1f, kNaN, 0.2f));
+  cloud->push_back(pcl::PointXYZ(std::numeric_limits<float>::infinity(), 0.f, 0.f));
+  cloud->width = static_cast<std::uint32_t>(cloud->points.size());
+  cloud->height = 1;
+  cloud->is_dense = false;
+  return cloud;
+}
+
+/** Compute on `cloud` with a pre-filled output; expect failure and a message that
+ * contains one of `words` (lower case). */
+void
+expectError(Estimator& est, std::initializer_list<const char*> words)
+{
+  Output out;
+  out.push_back(visfeat::PointVisibility(1.f, 2.f, 3.f));
+  est.compute(out);
+  EXPECT_TRUE(out.empty()) << "output should be empty on error";
+  EXPECT_EQ(out.width * out.height, 0u);
+  const std::string msg = lower(est.getErrorMessage());
+  ASSERT_FALSE(msg.empty()) << "no error message";
+  bool found = false;
+  std::string list;
+  for (const char* w : words) {
+    found = found || msg.find(w) != std::string::npos;
+    list += std::string(" '") + w + "'";
+  }
+  EXPECT_TRUE(found) << "message \"" << est.getErrorMessage() << "\" mentions none of"
+                     << list;
+}
+
+// ---------------------------------------------------------------- output
+
+TEST(Estimator, PerPointOutputFollowsTheMap)
+{
+  const Cloud::Ptr cloud = cloudWithNaNs(61, 24);
+  Estimator est;
+  est.setInputCloud(cloud);
+  est.setResolution(24);
+  est.setMaxRadius(8);
+  est.setNumberOfThreads(2);
+  Output out;
+  est.compute(out);
+  ASSERT_EQ(est.getErrorMessage(), "");
+  ASSERT_EQ(out.size(), cloud->size());
+  EXPECT_FALSE(out.is_dense);
+  const visfeat::VoxelBand& band = est.getVoxelBand();
+  const visfeat::VisibilityMap& map = est.getVisibilityMap();
+  ASSERT_EQ(band.pointCell().size(), cloud->size());
+  ASSERT_EQ(map.radii().size(), band.size());
+  EXPECT_EQ(map.parameters().max_radius, 8);
+  std::size_t nan_points = 0;
+  for (std::size_t i = 0; i < cloud->size(); ++i) {
+    const pcl::PointXYZ& p = cloud->points[i];
+    const visfeat::PointVisibility& q = out.points[i];
+    EXPECT_TRUE(sameFloat(q.x, p.x) && sameFloat(q.y, p.y) && sameFloat(q.z, p.z))
+      << "point " << i << " not copied";
+    if (!finite(p)) {
+      ++nan_points;
+      EXPECT_TRUE(std::isnan(q.visibility_radius)) << "point " << i;
+      EXPECT_EQ(q.label, 0u);
+      EXPECT_EQ(q.feature_class, 0u);
+      EXPECT_EQ(band.pointCell()[i], kNoCell);
+      continue;
+    }
+    const CellId id = band.pointCell()[i];
+    ASSERT_NE(id, kNoCell) << "point " << i;
+    EXPECT_EQ(q.visibility_radius, static_cast<float>(map.radius(id))) << "point " << i;
+  }
+  EXPECT_EQ(nan_points, 3u);
+  // Grid of DESIGN.md: cell = extent / resolution of the finite points.
+  Eigen::Vector3d lo = Eigen::Vector3d::Constant(1e30), hi = -lo;
+  for (const pcl::PointXYZ& p : cloud->points)
+    if (finite(p)) {
+      lo = lo.cwiseMin(Eigen::Vector3d(p.x, p.y, p.z));
+      hi = hi.cwiseMax(Eigen::Vector3d(p.x, p.y, p.z));
+    }
+  EXPECT_NEAR(est.getGrid().cell_size, (hi - lo).maxCoeff() / 24.0, 1e-9);
+}
+
+TEST(Estimator, WholeChainMatchesReference)
+{
+  Cloud::Ptr cloud(new Cloud(visfeat_test::syntheticShapeCloud("tetrahedron", 62, 16)));
+  for (double opacity : {0.0, 3.0}) {
+    Estimator est;
+    est.setInputCloud(cloud);
+    est.setResolution(16);
+    est.setMaxRadius(6);
+    est.setOpacity(opacity);
+    Output out;
+    est.compute(out);
+    ASSERT_EQ(out.size(), cloud->size()) << est.getErrorMessage();
+    const visfeat::VoxelBand& band = est.getVoxelBand();
+    const ref::FreeSubcells rfs(band.grid(), band.coords());
+    const std::vector<int> expected = ref::radii(band.coords(), rfs, 6, opacity);
+    std::size_t mismatches = 0;
+    for (std::size_t i = 0; i < cloud->size(); ++i) {
+      const CellId id = band.pointCell()[i];
+      ASSERT_NE(id, kNoCell);
+      mismatches += out.points[i].visibility_radius !=
+                    static_cast<float>(expected[static_cast<std::size_t>(id)]);
+    }
+    EXPECT_EQ(mismatches, 0u) << "opacity " << opacity;
+  }
+}
+
+TEST(Estimator, IndicesSelectTheOutputPoints)
+{
+  const Cloud::Ptr cloud = cloudWithNaNs(63, 20);
+  pcl::IndicesPtr indices(new pcl::Indices);
+  for (std::size_t i = 0; i < cloud->size(); i += 7)
+    indices->push_back(static_cast<pcl::index_t>(i));
+  indices->push_back(5); // the NaN point
+  Estimator full, part;
+  for (Estimator* e : {&full, &part}) {
+    e->setInputCloud(cloud);
+    e->setResolution(20);
+    e->setMaxRadius(6);
+  }
+  part.setIndices(indices);
+  Output all, some;
+  full.compute(all);
+  part.compute(some);
+  ASSERT_EQ(all.size(), cloud->size());
+  ASSERT_EQ(some.size(), indices->size());
+  for (std::size_t k = 0; k < indices->size(); ++k) {
+    const visfeat::PointVisibility& a =
+      all.points[static_cast<std::size_t>((*indices)[k])];
+    const visfeat::PointVisibility& b = some.points[k];
+    EXPECT_TRUE(sameFloat(a.x, b.x) && sameFloat(a.y, b.y) && sameFloat(a.z, b.z));
+    EXPECT_TRUE(sameFloat(a.visibility_radius, b.visibility_radius)) << "index " << k;
+  }
+  EXPECT_FALSE(some.is_dense);
+}
+
+TEST(Estimator, SameOutputForShuffledPointsAndThreadCounts)
+{
+  const Cloud::Ptr cloud = cloudWithNaNs(64, 24);
+  std::vector<std::size_t> perm(cloud->size());
+  std::iota(perm.begin(), perm.end(), 0);
+  std::mt19937_64 rng(9);
+  std::shuffle(perm.begin(), perm.end(), rng);
+  Cloud::Ptr shuffled(new Cloud);
+  for (std::size_t i : perm)
+    shuffled->push_back(cloud->points[i]);
+  shuffled->is_dense = false;
+
+  Output a, b, c;
+  Estimator ea, eb, ec;
+  ea.setInputCloud(cloud);
+  eb.setInputCloud(shuffled);
+  ec.setInputCloud(cloud);
+  for (Estimator* e : {&ea, &eb, &ec}) {
+    e->setResolution(24);
+    e->setMaxRadius(9);
+    e->setOpacity(1.5);
+  }
+  ea.setNumberOfThreads(1);
+  eb.setNumberOfThreads(2);
+  ec.setNumberOfThreads(2);
+  ea.compute(a);
+  eb.compute(b);
+  ec.compute(c);
+  ASSERT_EQ(a.size(), cloud->size());
+  ASSERT_EQ(b.size(), cloud->size());
+  ASSERT_EQ(c.size(), cloud->size());
+  ASSERT_EQ(ea.getVoxelBand().coords(), eb.getVoxelBand().coords());
+  for (std::size_t j = 0; j < perm.size(); ++j) {
+    ASSERT_TRUE(
+      sameFloat(b.points[j].visibility_radius, a.points[perm[j]].visibility_radius))
+      << "shuffled point " << j;
+    ASSERT_TRUE(sameFloat(c.points[j].visibility_radius, a.points[j].visibility_radius))
+      << "2 threads, point " << j;
+  }
+}
+
+TEST(Estimator, ErrorMessageClearedAfterSuccess)
+{
+  Cloud::Ptr cloud(new Cloud(visfeat_test::syntheticShapeCloud("cube", 65, 12)));
+  Estimator est;
+  est.setInputCloud(cloud);
+  est.setResolution(0);
+  expectError(est, {"resolution"});
+  est.setResolution(12);
+  est.setMaxRadius(4);
+  Output out;
+  est.compute(out);
+  EXPECT_EQ(out.size(), cloud->size());
+  EXPECT_EQ(est.getErrorMessage(), "");
+}
+
+// ---------------------------------------------------------------- bad input
+
+TEST(EstimatorBadInput, EmptyCloud)
+{
+  Estimator est;
+  est.setInputCloud(Cloud::Ptr(new Cloud));
+  est.setResolution(32);
+  expectError(est, {"empty", "no point"});
+}
+
+TEST(EstimatorBadInput, NoInputCloud)
+{
+  Estimator est;
+  expectError(est, {"input", "cloud"});
+}
+
+TEST(EstimatorBadInput, AllNaNCloud)
+{
+  Cloud::Ptr cloud(new Cloud);
+  for (int i = 0; i < 10; ++i)
+    cloud->push_back(pcl::PointXYZ(kNaN, static_cast<float>(i), kNaN));
+  cloud->push_back(pcl::PointXYZ(std::numeric_limits<float>::infinity(), 1.f, 1.f));
+  cloud->is_dense = false;
+  Estimator est;
+  est.setInputCloud(cloud);
+  est.setResolution(32);
+  expectError(est, {"finite", "nan"});
+}
+
+TEST(EstimatorBadInput, OnePoint)
+{
+  Cloud::Ptr cloud(new Cloud);
+  cloud->push_back(pcl::PointXYZ(1.f, 2.f, 3.f));
+  Estimator est;
+  est.setInputCloud(cloud);
+  est.setResolution(32);
+  expectError(est, {"coincide", "single", "one point", "1 point", "extent",
+                    "degenerate", "identical", "same"});
+  // Same with repeated copies of one point and NaNs around it.
+  cloud->push_back(pcl::PointXYZ(1.f, 2.f, 3.f));
+  cloud->push_back(pcl::PointXYZ(kNaN, kNaN, kNaN));
+  cloud->is_dense = false;
+  expectError(est, {"coincide", "single", "one point", "1 point", "extent",
+                    "degenerate", "identical", "same"});
+}
+
+TEST(EstimatorBadInput, ResolutionOutOfRange)
+{
+  Cloud::Ptr cloud(new Cloud(visfeat_test::syntheticShapeCloud("cube", 66, 12)));
+  for (int resolution : {0, -5, visfeat::GridSpec::kMinResolution - 1, 100000}) {
+    Estimator est;
+    est.setInputCloud(cloud);
+    est.setResolution(resolution);
+    SCOPED_TRACE("resolution " + std::to_string(resolution));
+    expectError(est, {"resolution"});
+  }
+}
+
+TEST(EstimatorBadInput, VisibilityParametersOutOfRange)
+{
+  Cloud::Ptr cloud(new Cloud(visfeat_test::syntheticShapeCloud("cube", 67, 12)));
+  {
+    Estimator est;
+    est.setInputCloud(cloud);
+    est.setResolution(12);
+    est.setOpacity(-1.0);
+    expectError(est, {"opacity"});
+  }
+  {
+    Estimator est;
+    est.setInputCloud(cloud);
+    est.setResolution(12);
+    est.setMaxRadius(0);
+    expectError(est, {"radius"});
+  }
+  {
+    Estimator est;
+    est.setInputCloud(cloud);
+    est.setResolution(12);
+    est.setMaxRadius(visfeat::VisibilityMap::kMaxRadius + 1);
+    expectError(est, {"radius"});
+  }
+}
+
+TEST(EstimatorBadInput, MemoryLimitIsEnforced)
+{
+  Cloud::Ptr cloud(new Cloud(visfeat_test::syntheticShapeCloud("cube", 68, 32)));
+  Estimator est;
+  est.setInputCloud(cloud);
+  est.setResolution(32);
+  est.setMemoryLimit(1024); // 1 KiB: nothing fits
+  expectError(est, {"memory", "mib"});
+}
+
+} // namespace

@@ -1,0 +1,506 @@
+// visfeat: per-point visibility features of a point cloud, in the manner of PCL's
+// tools/normal_estimation.cpp. Every input field survives; visibility_radius, label and
+// feature_class are added, and the result is written as binary compressed PCD.
+
+#include "tool_utils.h"
+
+#include <visfeat/error.h>
+#include <visfeat/grid_spec.h>
+#include <visfeat/memory_budget.h>
+#include <visfeat/point_types.h>
+#include <visfeat/visibility_feature_estimation.h>
+#include <visfeat/visibility_map.h>
+
+#include <pcl/console/parse.h>
+#include <pcl/console/print.h>
+#include <pcl/console/time.h>
+
+#include <chrono>
+#include <cstdio>
+#include <memory>
+#include <mutex>
+#include <new>
+#include <string>
+#include <vector>
+
+#include <unistd.h>
+
+using namespace pcl::console;
+namespace vt = visfeat_tools;
+
+namespace {
+
+const char* const kProgram = "visfeat";
+
+constexpr int kDefaultResolution = 256;
+constexpr int kDefaultMaxRadius = 11;
+constexpr double kDefaultOpacity = 0.0;
+constexpr int kDefaultThreads = 0;
+
+void
+printHelp(const char* program)
+{
+  print_error("Syntax is: %s input.{pcd,ply} output.pcd <options>\n", program);
+  print_info(
+    "  Labels every point with the visibility radius of its voxel-band cell (Chica et "
+    "al.,\n"
+    "  \"Visibility-Based Feature Extraction From Discrete Models\"). The output "
+    "holds\n"
+    "  every field of the input plus visibility_radius (float), label (uint32) and\n"
+    "  feature_class (uint8); an existing field of one of these names is overwritten.\n"
+    "  label and feature_class are 0 in this version.\n");
+  print_info("  where options are:\n");
+  print_info("    -resolution N     = cells along the longest side of the "
+             "bounding box (default: ");
+  print_value("%d", kDefaultResolution);
+  print_info(" cells; %d-%d)\n", visfeat::GridSpec::kMinResolution,
+             visfeat::GridSpec::kMaxResolution);
+  print_info("    -max_radius R     = cap of the visibility radius (default: ");
+  print_value("%d", kDefaultMaxRadius);
+  print_info(" rings; 1-%d)\n", visfeat::VisibilityMap::kMaxRadius);
+  print_info("    -opacity D        = blocked length tolerated between two "
+             "cells (default: ");
+  print_value("%g", kDefaultOpacity);
+  print_info(" cell edges = exact; ~3 for noisy scans)\n");
+  print_info("    -threads T        = threads of the visibility map (default: ");
+  print_value("%d", kDefaultThreads);
+  print_info(" = all)\n");
+  print_info("    -no_repair        = do not add cells to make the band "
+             "6-connected (default: ");
+  print_value("repair on");
+  print_info(")\n");
+  print_info("    -memory_limit_mb M = refuse grids needing more memory (default: ");
+  print_value("0");
+  print_info(" = 3/4 of physical memory, MiB)\n");
+  print_info("    -voxels cells.pcd = also write one point per band cell "
+             "(cell centre, i j k, visibility_radius, label, feature_class)\n");
+  print_info("    -q                = quiet: errors only\n");
+  print_info("  Outputs are written to a temporary file and renamed when complete.\n");
+}
+
+/** \brief Progress of the visibility map on stderr: only after the first 2 s, at most
+ * every 0.5 s; one line rewritten with \r on a terminal, plain lines otherwise. The
+ * callback may be called from several threads at once. */
+class ProgressPrinter
+{
+public:
+  ProgressPrinter()
+      : start_(Clock::now())
+      , last_(start_)
+      , tty_(isatty(fileno(stderr)) != 0)
+  {}
+
+  void operator()(std::size_t done, std::size_t total)
+  {
+    std::unique_lock<std::mutex> lock(mutex_, std::try_to_lock);
+    if (!lock.owns_lock() || total == 0)
+      return;
+    const Clock::time_point now = Clock::now();
+    const double elapsed = seconds(now - start_);
+    if (elapsed < 2.0 || (printed_ && seconds(now - last_) < 0.5))
+      return;
+    if (!printed_) {
+      // Leave the "Computing ..." line of stdout intact when both streams share a
+      // terminal or a log file.
+      std::fflush(stdout);
+      std::fputc('\n', stderr);
+    }
+    last_ = now;
+    printed_ = true;
+    last_total_ = total;
+    std::fprintf(stderr,
+                 "%s  visibility map: %3d%% (%zu / %zu cells, %.1f s since start)%s",
+                 tty_ ? "\r" : "", static_cast<int>(100.0 * done / total), done, total,
+                 elapsed, tty_ ? "" : "\n");
+    std::fflush(stderr);
+  }
+
+  /** \brief End the progress line, if one was started. */
+  void finish()
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (printed_ && tty_) {
+      std::fprintf(stderr,
+                   "\r  visibility map: 100%% (%zu / %zu cells, %.1f s since start)\n",
+                   last_total_, last_total_, seconds(Clock::now() - start_));
+      std::fflush(stderr);
+    }
+    printed_ = false;
+  }
+
+private:
+  using Clock = std::chrono::steady_clock;
+
+  static double seconds(Clock::duration d)
+  {
+    return std::chrono::duration<double>(d).count();
+  }
+
+  std::mutex mutex_;
+  Clock::time_point start_;
+  Clock::time_point last_;
+  bool tty_;
+  bool printed_ = false;
+  std::size_t last_total_ = 0;
+};
+
+struct Options
+{
+  int resolution = kDefaultResolution;
+  int max_radius = kDefaultMaxRadius;
+  double opacity = kDefaultOpacity;
+  int threads = kDefaultThreads;
+  bool repair = true;
+  long long memory_limit_mb = 0;
+  std::string voxels;
+  bool quiet = false;
+};
+
+int
+fail(const std::string& message)
+{
+  vt::printError(kProgram, message);
+  return 1;
+}
+
+/** \brief Write a PCLPointCloud2 as binary compressed PCD to the temporary name of
+ * `path`; commitOutput() moves it into place. */
+bool
+writeTemporary(const std::string& path,
+               const pcl::PCLPointCloud2& cloud,
+               const Eigen::Vector4f& origin,
+               const Eigen::Quaternionf& orientation,
+               std::string& error)
+{
+  pcl::PCDWriter writer;
+  const int rc = vt::quietly([&] {
+    return writer.writeBinaryCompressed(vt::temporaryPath(path), cloud, origin,
+                                        orientation);
+  });
+  if (rc < 0) {
+    vt::discardOutput(path);
+    error = "cannot write '" + path + "' (disk full or not writable?)";
+    return false;
+  }
+  return true;
+}
+
+/** \brief The -voxels cloud: one PointVoxel per band cell, at the cell centre. */
+pcl::PointCloud<visfeat::PointVoxel>
+voxelCloud(const visfeat::VoxelBand& band, const visfeat::VisibilityMap& map)
+{
+  pcl::PointCloud<visfeat::PointVoxel> cells;
+  cells.resize(band.size());
+  const bool have_radii = map.radii().size() == band.size();
+  for (std::size_t id = 0; id < band.size(); ++id) {
+    const visfeat::CellCoord& c = band.coord(static_cast<visfeat::CellId>(id));
+    const Eigen::Vector3d centre = band.grid().cellCenter(c);
+    visfeat::PointVoxel& v = cells[id];
+    v.x = static_cast<float>(centre.x());
+    v.y = static_cast<float>(centre.y());
+    v.z = static_cast<float>(centre.z());
+    v.i = c.x();
+    v.j = c.y();
+    v.k = c.z();
+    v.visibility_radius =
+      have_radii ? static_cast<float>(map.radius(static_cast<visfeat::CellId>(id)))
+                 : 0.f;
+    v.label = 0;
+    v.feature_class = 0;
+  }
+  cells.width = static_cast<std::uint32_t>(cells.size());
+  cells.height = 1;
+  cells.is_dense = true;
+  return cells;
+}
+
+void
+printHistogram(const visfeat::VisibilityMap& map, int max_radius)
+{
+  std::vector<std::size_t> counts(static_cast<std::size_t>(std::max(max_radius, 0)) + 1,
+                                  0);
+  for (std::uint8_t r : map.radii())
+    ++counts[std::min<std::size_t>(r, counts.size() - 1)];
+  print_info("Visibility radius (rings: cells):");
+  int shown = 0;
+  for (std::size_t r = 0; r < counts.size(); ++r) {
+    if (counts[r] == 0)
+      continue;
+    if (shown > 0 && shown % 8 == 0)
+      print_info("\n                                 ");
+    print_info(" ");
+    print_value("%zu", r);
+    print_info(":");
+    print_value("%zu", counts[r]);
+    ++shown;
+  }
+  if (shown == 0)
+    print_info(" none");
+  print_info("  (radii without cells omitted)\n");
+}
+
+int
+run(int argc, char** argv)
+{
+  const vt::Arguments args(argc, argv,
+                           {"-resolution", "-max_radius", "-opacity", "-threads",
+                            "-memory_limit_mb", "-voxels"},
+                           {"-no_repair", "-q", "-h", "--help"});
+  if (!args.ok())
+    return fail(args.error());
+
+  Options opt;
+  opt.quiet = args.has("-q");
+  if (opt.quiet)
+    vt::beQuiet();
+  else
+    print_info(
+      "Estimate visibility features of a point cloud. For more information, use: %s "
+      "-h\n",
+      argv[0]);
+
+  if (args.positional().size() != 2)
+    return fail("expected an input (.pcd or .ply) and an output (.pcd), got " +
+                std::to_string(args.positional().size()) +
+                " file argument(s) (see -h)");
+  const std::string input = args.positional()[0];
+  const std::string output = args.positional()[1];
+
+  // Option values: types and signs here; ranges with the library's own limits, before
+  // the (possibly long) load.
+  std::string error;
+  if (!args.getInteger("-resolution", visfeat::GridSpec::kMinResolution,
+                       visfeat::GridSpec::kMaxResolution, opt.resolution, error) ||
+      !args.getInteger("-max_radius", 1, visfeat::VisibilityMap::kMaxRadius,
+                       opt.max_radius, error) ||
+      !args.getReal("-opacity", 0.0, visfeat::VisibilityMap::kMaxOpacity, opt.opacity,
+                    error) ||
+      !args.getInteger("-threads", 0, visfeat::VisibilityMap::kMaxThreads, opt.threads,
+                       error) ||
+      !args.getInteger("-memory_limit_mb", 0, 1LL << 40, opt.memory_limit_mb, error))
+    return fail(error);
+  opt.repair = !args.has("-no_repair");
+  opt.voxels = args.value("-voxels");
+  if (args.has("-voxels") && opt.voxels.empty())
+    return fail("-voxels needs a file name");
+
+  // Outputs: .pcd, writable, checked before any work.
+  const std::vector<std::string> outputs{output, opt.voxels};
+  for (const std::string& path : outputs) {
+    if (path.empty())
+      continue;
+    if (vt::lowerExtension(path) != ".pcd")
+      return fail("output '" + path + "' must have the extension .pcd");
+    if (!vt::checkWritable(path, error))
+      return fail(error);
+  }
+  if (!opt.voxels.empty() && opt.voxels == output)
+    return fail("the -voxels file must differ from the output file");
+
+  // Load.
+  TicToc tt;
+  tt.tic();
+  print_highlight("Loading ");
+  print_value("%s ", input.c_str());
+  pcl::PCLPointCloud2 cloud;
+  Eigen::Vector4f origin;
+  Eigen::Quaternionf orientation;
+  if (!vt::loadCloud(input, cloud, origin, orientation, error)) {
+    print_info("\n");
+    return fail(error);
+  }
+  print_info("[done, ");
+  print_value("%g", tt.toc());
+  print_info(" ms : ");
+  print_value("%zu", static_cast<std::size_t>(cloud.width) * cloud.height);
+  print_info(" points]\n");
+  print_info("Available dimensions: ");
+  print_value("%s\n", pcl::getFieldsList(cloud).c_str());
+
+  std::string problem;
+  if (!vt::hasXYZ(cloud, problem))
+    return fail("'" + input + "': " + problem);
+  if (cloud.width * static_cast<std::size_t>(cloud.height) == 0)
+    return fail("'" + input + "': the cloud has no points");
+  auto xyz = std::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
+  vt::toXYZ(cloud, *xyz);
+
+  // Compute.
+  visfeat::VisibilityFeatureEstimation<pcl::PointXYZ, visfeat::PointVisibility>
+    estimator;
+  estimator.setInputCloud(xyz);
+  estimator.setResolution(opt.resolution);
+  estimator.setMaxRadius(opt.max_radius);
+  estimator.setOpacity(opt.opacity);
+  estimator.setNumberOfThreads(static_cast<unsigned int>(opt.threads));
+  estimator.setBandRepair(opt.repair);
+  estimator.setMemoryLimit(static_cast<std::uint64_t>(opt.memory_limit_mb) * 1024u *
+                           1024u);
+  auto progress = std::make_shared<ProgressPrinter>();
+  if (!opt.quiet)
+    estimator.setProgressCallback(
+      [progress](std::size_t done, std::size_t total) { (*progress)(done, total); });
+
+  print_highlight("Computing visibility features ");
+  print_info("(resolution ");
+  print_value("%d", opt.resolution);
+  print_info(", max radius ");
+  print_value("%d", opt.max_radius);
+  print_info(", opacity ");
+  print_value("%g", opt.opacity);
+  print_info(", threads ");
+  print_value("%d", opt.threads);
+  print_info(", repair ");
+  print_value("%s", opt.repair ? "on" : "off");
+  print_info(") ");
+  std::fflush(stdout);
+  pcl::PointCloud<visfeat::PointVisibility> result;
+  tt.tic();
+  {
+    // compute() reports errors through getErrorMessage(); PCL_ERROR lines of its own
+    // would repeat them, so only our one line is printed.
+    const VERBOSITY_LEVEL level = getVerbosityLevel();
+    setVerbosityLevel(L_ALWAYS);
+    try {
+      estimator.compute(result);
+    } catch (const std::bad_alloc&) {
+      setVerbosityLevel(level);
+      progress->finish();
+      print_info("\n");
+      return fail("out of memory; lower -resolution or -max_radius");
+    } catch (const std::exception& e) {
+      setVerbosityLevel(level);
+      progress->finish();
+      print_info("\n");
+      return fail(e.what());
+    }
+    setVerbosityLevel(level);
+  }
+  progress->finish();
+  if (result.empty()) {
+    print_info("\n");
+    const std::string& why = estimator.getErrorMessage();
+    return fail("'" + input +
+                "': " + (why.empty() ? std::string("computation failed") : why));
+  }
+  print_info("[done, ");
+  print_value("%g", tt.toc());
+  print_info(" ms]\n");
+
+  const visfeat::GridSpec& grid = estimator.getGrid();
+  const visfeat::VoxelBand& band = estimator.getVoxelBand();
+  print_info("Grid: origin (");
+  print_value("%g %g %g", grid.origin.x(), grid.origin.y(), grid.origin.z());
+  print_info("), cell ");
+  print_value("%g", grid.cell_size);
+  print_info(", dims ");
+  print_value("%d x %d x %d", grid.dims.x(), grid.dims.y(), grid.dims.z());
+  print_info(", mixed cells ");
+  print_value("%zu", band.size());
+  print_info(" (repair cells ");
+  print_value("%zu", band.repairCellCount());
+  print_info(")\n");
+  const visfeat::PhaseTimes& times = estimator.getPhaseTimes();
+  print_info("Phases: grid ");
+  print_value("%.1f", times.grid_ms);
+  print_info(" ms, band ");
+  print_value("%.1f", times.band_ms);
+  print_info(" ms, free space ");
+  print_value("%.1f", times.free_space_ms);
+  print_info(" ms, visibility ");
+  print_value("%.1f", times.visibility_ms);
+  print_info(" ms, output ");
+  print_value("%.1f", times.output_ms);
+  print_info(" ms; total ");
+  print_value("%.1f", times.total());
+  print_info(" ms\n");
+  printHistogram(estimator.getVisibilityMap(), opt.max_radius);
+
+  // Output: the input's fields (those named like ours removed) + the three new fields.
+  if (result.size() != static_cast<std::size_t>(cloud.width) * cloud.height)
+    return fail("internal error: " + std::to_string(result.size()) +
+                " output points for " +
+                std::to_string(static_cast<std::size_t>(cloud.width) * cloud.height) +
+                " input points");
+  pcl::PCLPointCloud2 features;
+  pcl::toPCLPointCloud2(result, features);
+  features = vt::withoutFields(features, {"x", "y", "z"});
+  features.width = cloud.width;
+  features.height = cloud.height;
+  features.row_step = features.point_step * features.width;
+  features.is_bigendian = cloud.is_bigendian;
+  const pcl::PCLPointCloud2 kept =
+    vt::withoutFields(cloud, {"visibility_radius", "label", "feature_class"});
+  pcl::PCLPointCloud2 merged;
+  // concatenateFields puts the second cloud's fields first: x y z ... then ours.
+  if (!pcl::concatenateFields(features, kept, merged))
+    return fail("internal error: cannot concatenate the fields");
+
+  // Both files are written under temporary names and renamed only when both are
+  // complete, so a failure leaves neither.
+  tt.tic();
+  print_highlight("Saving ");
+  print_value("%s ", output.c_str());
+  if (!writeTemporary(output, merged, origin, orientation, error)) {
+    print_info("\n");
+    return fail(error);
+  }
+  print_info("[done, ");
+  print_value("%g", tt.toc());
+  print_info(" ms : ");
+  print_value("%u", merged.width * merged.height);
+  print_info(" points; fields: ");
+  print_value("%s", pcl::getFieldsList(merged).c_str());
+  print_info("]\n");
+
+  if (!opt.voxels.empty()) {
+    tt.tic();
+    print_highlight("Saving ");
+    print_value("%s ", opt.voxels.c_str());
+    const pcl::PointCloud<visfeat::PointVoxel> cells =
+      voxelCloud(band, estimator.getVisibilityMap());
+    pcl::PCLPointCloud2 cells2;
+    pcl::toPCLPointCloud2(cells, cells2);
+    if (!writeTemporary(opt.voxels, cells2, Eigen::Vector4f::Zero(),
+                        Eigen::Quaternionf::Identity(), error)) {
+      vt::discardOutput(output);
+      print_info("\n");
+      return fail(error);
+    }
+    print_info("[done, ");
+    print_value("%g", tt.toc());
+    print_info(" ms : ");
+    print_value("%zu", cells.size());
+    print_info(" cells]\n");
+  }
+  if (!vt::commitOutput(output, error)) {
+    if (!opt.voxels.empty())
+      vt::discardOutput(opt.voxels);
+    return fail(error);
+  }
+  if (!opt.voxels.empty() && !vt::commitOutput(opt.voxels, error))
+    return fail(error);
+  return 0;
+}
+
+} // namespace
+
+int
+main(int argc, char** argv)
+{
+  if (argc < 2) {
+    printHelp(argv[0]);
+    return 1;
+  }
+  if (find_switch(argc, argv, "-h") || find_switch(argc, argv, "--help")) {
+    printHelp(argv[0]);
+    return 0;
+  }
+  try {
+    return run(argc, argv);
+  } catch (const std::bad_alloc&) {
+    return fail("out of memory");
+  } catch (const std::exception& e) {
+    return fail(e.what());
+  }
+}

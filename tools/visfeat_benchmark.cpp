@@ -1,0 +1,506 @@
+// visfeat_benchmark: time VisibilityFeatureEstimation on synthetic shapes at several
+// resolutions, phase by phase, against PCL's NormalEstimationOMP (k = 30) on the same
+// cloud -- the target is to cost no more than normal estimation.
+
+#include "tool_utils.h"
+
+#include <visfeat/error.h>
+#include <visfeat/free_space.h>
+#include <visfeat/grid_spec.h>
+#include <visfeat/point_types.h>
+#include <visfeat/synthetic_shapes.h>
+#include <visfeat/visibility_feature_estimation.h>
+#include <visfeat/visibility_map.h>
+
+#include <pcl/console/parse.h>
+#include <pcl/console/print.h>
+#include <pcl/features/normal_3d_omp.h>
+#include <pcl/search/kdtree.h>
+
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <limits>
+#include <memory>
+#include <new>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <sys/resource.h>
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+using namespace pcl::console;
+namespace vt = visfeat_tools;
+
+namespace {
+
+const char* const kProgram = "visfeat_benchmark";
+
+constexpr int kDefaultMaxRadius = 11;
+constexpr double kDefaultOpacity = 0.0;
+constexpr double kSpacingCells = 0.5;
+constexpr int kBaselineK = 30;
+
+void
+printHelp(const char* program)
+{
+  print_error("Syntax is: %s <options>\n", program);
+  print_info(
+    "  Samples synthetic shapes (random rotation, %g-cell spacing) and times visfeat "
+    "on\n"
+    "  them, phase by phase, next to pcl::NormalEstimationOMP (k = %d, kd-tree build\n"
+    "  included) on the same cloud. Sampling is not timed.\n",
+    kSpacingCells, kBaselineK);
+  print_info("  where options are:\n");
+  print_info("    -shapes a,b,...     = shapes (default: ");
+  std::string all;
+  for (const auto& name : visfeat::synthetic::shapeNames())
+    all += (all.empty() ? "" : ",") + name;
+  print_value("%s", all.c_str());
+  print_info(")\n");
+  print_info("    -resolutions a,b,.. = cells along the longest side (default: ");
+  print_value("128,256,512");
+  print_info(")\n");
+  print_info("    -threads T          = threads for both methods (default: ");
+  print_value("0");
+  print_info(" = all)\n");
+  print_info("    -repeat N           = runs per measurement, best reported "
+             "(default: ");
+  print_value("1");
+  print_info(")\n");
+  print_info("    -max_radius R       = cap of the visibility radius (default: ");
+  print_value("%d", kDefaultMaxRadius);
+  print_info(" rings)\n");
+  print_info("    -opacity D          = opacity (default: ");
+  print_value("%g", kDefaultOpacity);
+  print_info(" cell edges)\n");
+  print_info("    -seed K             = rotation and sampling seed (default: ");
+  print_value("1");
+  print_info(")\n");
+  print_info("    -no_baseline        = skip PCL's normal estimation\n");
+  print_info("    -csv                = comma-separated output (notes go to "
+             "stderr)\n");
+  print_info(
+    "  Columns: seconds per phase (grid, band, free space, visibility, output), total "
+    "= wall\n"
+    "  time of compute(); Mcell/s = mixed cells / visibility seconds; tests = pair "
+    "tests\n"
+    "  (millions); peak_MiB = peak resident memory during the run (see the note "
+    "printed);\n"
+    "  data_MiB = band + free-space mask + radii; ratio = visfeat total / normals "
+    "total.\n");
+}
+
+int
+fail(const std::string& message)
+{
+  vt::printError(kProgram, message);
+  return 1;
+}
+
+double
+now()
+{
+  return std::chrono::duration<double>(
+           std::chrono::steady_clock::now().time_since_epoch())
+    .count();
+}
+
+/** \brief Peak resident memory. Linux lets a process reset its high-water mark
+ * (/proc/self/clear_refs, "5"); when that works each run reports its own peak (VmHWM),
+ * otherwise getrusage's ru_maxrss, the peak of the whole process so far. */
+class PeakMemory
+{
+public:
+  PeakMemory() { per_run_ = reset() && readHwmKiB() > 0; }
+
+  bool perRun() const { return per_run_; }
+
+  void startRun() const
+  {
+    if (per_run_)
+      reset();
+  }
+
+  double peakMiB() const
+  {
+    if (per_run_)
+      return readHwmKiB() / 1024.0;
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    return static_cast<double>(usage.ru_maxrss) / 1024.0; // KiB on Linux
+  }
+
+private:
+  static bool reset()
+  {
+    std::ofstream f("/proc/self/clear_refs");
+    f << "5";
+    f.flush();
+    return static_cast<bool>(f);
+  }
+
+  static double readHwmKiB()
+  {
+    std::ifstream f("/proc/self/status");
+    std::string line;
+    while (std::getline(f, line))
+      if (line.rfind("VmHWM:", 0) == 0) {
+        std::istringstream s(line.substr(6));
+        double kib = 0;
+        s >> kib;
+        return kib;
+      }
+    return 0.0;
+  }
+
+  bool per_run_ = false;
+};
+
+struct Row
+{
+  std::string shape;
+  int resolution = 0;
+  std::string method;
+  std::size_t points = 0;
+  bool visfeat = true;
+  std::size_t mixed = 0;
+  std::size_t repair = 0;
+  visfeat::PhaseTimes phases; // ms
+  double total_s = 0.0;
+  double cells_per_s = 0.0;
+  std::uint64_t tests = 0;
+  double peak_mib = 0.0;
+  double data_mib = 0.0;
+  double ratio = 0.0; // baseline rows: visfeat total / this total
+  std::string error;
+};
+
+class Table
+{
+public:
+  explicit Table(bool csv)
+      : csv_(csv)
+  {}
+
+  void header() const
+  {
+    if (csv_) {
+      std::printf(
+        "shape,resolution,method,points,mixed_cells,repair_cells,grid_s,band_s,"
+        "free_space_s,visibility_s,output_s,phase_sum_s,total_s,mixed_cells_per_s,"
+        "pair_tests,peak_rss_mib,structures_mib,ratio_visfeat_over_normals,error\n");
+      return;
+    }
+    std::printf(
+      "%-12s %5s %-8s %9s %9s %7s %7s %7s %7s %7s %7s %8s %8s %9s %8s %8s %6s\n",
+      "shape", "res", "method", "points", "mixed", "repair", "grid_s", "band_s",
+      "free_s", "vis_s", "out_s", "total_s", "Mcell/s", "tests(M)", "peak_MiB",
+      "data_MiB", "ratio");
+  }
+
+  void row(const Row& r) const
+  {
+    const visfeat::PhaseTimes& p = r.phases;
+    if (csv_) {
+      if (r.visfeat)
+        std::printf(
+          "%s,%d,%s,%zu,%zu,%zu,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.1f,%llu,%.1f,%.2f,"
+          ",%s\n",
+          r.shape.c_str(), r.resolution, r.method.c_str(), r.points, r.mixed, r.repair,
+          p.grid_ms / 1e3, p.band_ms / 1e3, p.free_space_ms / 1e3,
+          p.visibility_ms / 1e3, p.output_ms / 1e3, p.total() / 1e3, r.total_s,
+          r.cells_per_s, static_cast<unsigned long long>(r.tests), r.peak_mib,
+          r.data_mib, csvText(r.error).c_str());
+      else
+        std::printf("%s,%d,%s,%zu,,,,,,,,,%.6f,,,%.1f,,%s,%s\n", r.shape.c_str(),
+                    r.resolution, r.method.c_str(), r.points, r.total_s, r.peak_mib,
+                    r.ratio > 0 ? std::to_string(r.ratio).c_str() : "",
+                    csvText(r.error).c_str());
+      std::fflush(stdout);
+      return;
+    }
+    if (!r.error.empty())
+      std::printf("%-12s %5d %-8s %9zu  FAILED: %s\n", r.shape.c_str(), r.resolution,
+                  r.method.c_str(), r.points, r.error.c_str());
+    else if (r.visfeat)
+      std::printf(
+        "%-12s %5d %-8s %9zu %9zu %7zu %7.3f %7.3f %7.3f %7.3f %7.3f %8.3f %8.3f "
+        "%9.1f %8.1f %8.1f %6s\n",
+        r.shape.c_str(), r.resolution, r.method.c_str(), r.points, r.mixed, r.repair,
+        p.grid_ms / 1e3, p.band_ms / 1e3, p.free_space_ms / 1e3, p.visibility_ms / 1e3,
+        p.output_ms / 1e3, r.total_s, r.cells_per_s / 1e6,
+        static_cast<double>(r.tests) / 1e6, r.peak_mib, r.data_mib, "-");
+    else {
+      char ratio[32] = "-";
+      if (r.ratio > 0)
+        std::snprintf(ratio, sizeof(ratio), "%.2f", r.ratio);
+      std::printf(
+        "%-12s %5d %-8s %9zu %9s %7s %7s %7s %7s %7s %7s %8.3f %8s %9s %8.1f %8s %6s\n",
+        r.shape.c_str(), r.resolution, r.method.c_str(), r.points, "-", "-", "-", "-",
+        "-", "-", "-", r.total_s, "-", "-", r.peak_mib, "-", ratio);
+    }
+    std::fflush(stdout);
+  }
+
+private:
+  static std::string csvText(std::string text)
+  {
+    for (char& c : text)
+      if (c == ',' || c == '\n' || c == '"')
+        c = ';';
+    return text;
+  }
+
+  bool csv_;
+};
+
+struct Settings
+{
+  std::vector<std::string> shapes;
+  std::vector<int> resolutions{128, 256, 512};
+  int threads = 0;
+  int repeat = 1;
+  int max_radius = kDefaultMaxRadius;
+  double opacity = kDefaultOpacity;
+  long long seed = 1;
+  bool baseline = true;
+  bool csv = false;
+};
+
+Row
+runVisfeat(const Settings& s,
+           int resolution,
+           const pcl::PointCloud<pcl::PointXYZ>::ConstPtr& cloud,
+           const PeakMemory& memory)
+{
+  Row best;
+  best.resolution = resolution;
+  best.method = "visfeat";
+  best.points = cloud->size();
+  best.total_s = std::numeric_limits<double>::infinity();
+  double peak = 0.0;
+  for (int run = 0; run < s.repeat; ++run) {
+    visfeat::VisibilityFeatureEstimation<pcl::PointXYZ, visfeat::PointVisibility>
+      estimator;
+    estimator.setInputCloud(cloud);
+    estimator.setResolution(resolution);
+    estimator.setMaxRadius(s.max_radius);
+    estimator.setOpacity(s.opacity);
+    estimator.setNumberOfThreads(static_cast<unsigned int>(s.threads));
+    pcl::PointCloud<visfeat::PointVisibility> out;
+    memory.startRun();
+    const double t0 = now();
+    vt::quietly([&] {
+      estimator.compute(out);
+      return 0;
+    });
+    const double seconds = now() - t0;
+    peak = std::max(peak, memory.peakMiB());
+    if (out.empty()) {
+      best.error = estimator.getErrorMessage().empty() ? "compute() failed"
+                                                       : estimator.getErrorMessage();
+      return best;
+    }
+    if (seconds < best.total_s) {
+      const visfeat::VoxelBand& band = estimator.getVoxelBand();
+      best.total_s = seconds;
+      best.phases = estimator.getPhaseTimes();
+      best.mixed = band.size();
+      best.repair = band.repairCellCount();
+      best.tests = estimator.getVisibilityMap().testsPerformed();
+      best.cells_per_s =
+        best.phases.visibility_ms > 0
+          ? static_cast<double>(band.size()) / (best.phases.visibility_ms / 1e3)
+          : 0.0;
+      // The estimator does not expose its FreeSpace; its mask size follows from the
+      // grid.
+      best.data_mib =
+        static_cast<double>(band.memoryBytes() +
+                            visfeat::FreeSpace::estimateBytes(band.grid()) +
+                            estimator.getVisibilityMap().radii().size()) /
+        (1024.0 * 1024.0);
+    }
+  }
+  best.peak_mib = peak;
+  return best;
+}
+
+Row
+runNormals(const Settings& s,
+           const pcl::PointCloud<pcl::PointXYZ>::ConstPtr& cloud,
+           const PeakMemory& memory)
+{
+  Row best;
+  best.visfeat = false;
+  best.method = "normals";
+  best.points = cloud->size();
+  best.total_s = std::numeric_limits<double>::infinity();
+  double peak = 0.0;
+  for (int run = 0; run < s.repeat; ++run) {
+    pcl::NormalEstimationOMP<pcl::PointXYZ, pcl::Normal> ne(
+      static_cast<unsigned int>(s.threads));
+    ne.setInputCloud(cloud);
+    ne.setSearchMethod(std::make_shared<pcl::search::KdTree<pcl::PointXYZ>>());
+    ne.setKSearch(kBaselineK);
+    pcl::PointCloud<pcl::Normal> normals;
+    memory.startRun();
+    const double t0 = now(); // includes the kd-tree build, done inside compute()
+    ne.compute(normals);
+    const double seconds = now() - t0;
+    peak = std::max(peak, memory.peakMiB());
+    if (normals.size() != cloud->size()) {
+      best.error = "NormalEstimationOMP failed";
+      return best;
+    }
+    best.total_s = std::min(best.total_s, seconds);
+  }
+  best.peak_mib = peak;
+  return best;
+}
+
+int
+run(int argc, char** argv)
+{
+  const vt::Arguments args(argc, argv,
+                           {"-shapes", "-resolutions", "-threads", "-repeat",
+                            "-max_radius", "-opacity", "-seed"},
+                           {"-no_baseline", "-csv", "-h", "--help"});
+  if (!args.ok())
+    return fail(args.error());
+  if (!args.positional().empty())
+    return fail("unexpected argument '" + args.positional()[0] + "' (see -h)");
+
+  Settings s;
+  std::string error;
+  if (!args.getInteger("-threads", 0, visfeat::VisibilityMap::kMaxThreads, s.threads,
+                       error) ||
+      !args.getInteger("-repeat", 1, 1000, s.repeat, error) ||
+      !args.getInteger("-max_radius", 1, visfeat::VisibilityMap::kMaxRadius,
+                       s.max_radius, error) ||
+      !args.getReal("-opacity", 0.0, visfeat::VisibilityMap::kMaxOpacity, s.opacity,
+                    error) ||
+      !args.getInteger("-seed", 0, std::numeric_limits<long long>::max(), s.seed,
+                       error))
+    return fail(error);
+  s.baseline = !args.has("-no_baseline");
+  s.csv = args.has("-csv");
+
+  const std::vector<std::string> known = visfeat::synthetic::shapeNames();
+  if (args.has("-shapes")) {
+    for (const std::string& name : vt::splitList(args.value("-shapes"))) {
+      if (std::find(known.begin(), known.end(), name) == known.end()) {
+        std::string list;
+        for (const auto& k : known)
+          list += (list.empty() ? "" : ", ") + k;
+        return fail("-shapes: unknown shape '" + name + "' (known: " + list + ")");
+      }
+      s.shapes.push_back(name);
+    }
+  } else
+    s.shapes = known;
+  if (args.has("-resolutions")) {
+    s.resolutions.clear();
+    for (const std::string& item : vt::splitList(args.value("-resolutions"))) {
+      long long r = 0;
+      if (!vt::parseInteger(item, r) || r < visfeat::GridSpec::kMinResolution ||
+          r > visfeat::GridSpec::kMaxResolution)
+        return fail("-resolutions: '" + item + "' is not an integer in [" +
+                    std::to_string(visfeat::GridSpec::kMinResolution) + ", " +
+                    std::to_string(visfeat::GridSpec::kMaxResolution) + "]");
+      s.resolutions.push_back(static_cast<int>(r));
+    }
+  }
+
+  // Notes: on stdout for the table, on stderr with -csv so stdout stays pure CSV.
+  FILE* notes = s.csv ? stderr : stdout;
+  int omp_threads = 1;
+#ifdef _OPENMP
+  omp_threads = omp_get_max_threads();
+#endif
+  const PeakMemory memory;
+  std::fprintf(
+    notes,
+    "# machine: %u hardware threads (OpenMP: %d); threads used: %d%s; repeat %d "
+    "(best reported); max_radius %d; opacity %g; seed %lld; spacing %g cells\n",
+    std::thread::hardware_concurrency(), omp_threads,
+    s.threads == 0 ? omp_threads : s.threads, s.threads == 0 ? " (all)" : "", s.repeat,
+    s.max_radius, s.opacity, s.seed, kSpacingCells);
+  std::fprintf(notes, "# peak_MiB: %s\n",
+               memory.perRun()
+                 ? "peak resident memory during each run (VmHWM, reset before "
+                   "the run; includes the resident input and heap)"
+                 : "getrusage ru_maxrss: the peak of the whole process so far");
+  std::fflush(notes);
+
+  const Table table(s.csv);
+  table.header();
+  int status = 0;
+  for (const std::string& shape : s.shapes) {
+    const std::uint64_t seed = static_cast<std::uint64_t>(s.seed);
+    const visfeat::synthetic::TriangleMesh mesh = visfeat::synthetic::rotated(
+      visfeat::synthetic::shapeByName(shape), visfeat::synthetic::randomRotation(seed));
+    for (int resolution : s.resolutions) {
+      auto cloud = std::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
+      {
+        const std::vector<Eigen::Vector3f> samples = visfeat::synthetic::sampleSurface(
+          mesh, visfeat::synthetic::samplesForSpacing(mesh, resolution, kSpacingCells),
+          seed);
+        cloud->resize(samples.size());
+        for (std::size_t i = 0; i < samples.size(); ++i)
+          (*cloud)[i].getVector3fMap() = samples[i];
+        cloud->width = static_cast<std::uint32_t>(cloud->size());
+        cloud->height = 1;
+        cloud->is_dense = true;
+      }
+
+      Row v;
+      try {
+        v = runVisfeat(s, resolution, cloud, memory);
+      } catch (const std::exception& e) {
+        v.method = "visfeat";
+        v.points = cloud->size();
+        v.error = e.what();
+      }
+      v.shape = shape;
+      v.resolution = resolution;
+      table.row(v);
+      if (!v.error.empty())
+        status = 1;
+
+      if (s.baseline) {
+        Row n = runNormals(s, cloud, memory);
+        n.shape = shape;
+        n.resolution = resolution;
+        if (v.error.empty() && n.error.empty() && n.total_s > 0)
+          n.ratio = v.total_s / n.total_s;
+        table.row(n);
+        if (!n.error.empty())
+          status = 1;
+      }
+    }
+  }
+  return status;
+}
+
+} // namespace
+
+int
+main(int argc, char** argv)
+{
+  if (find_switch(argc, argv, "-h") || find_switch(argc, argv, "--help")) {
+    printHelp(argv[0]);
+    return 0;
+  }
+  try {
+    return run(argc, argv);
+  } catch (const std::bad_alloc&) {
+    return fail("out of memory");
+  } catch (const std::exception& e) {
+    return fail(e.what());
+  }
+}
