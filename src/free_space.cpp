@@ -15,7 +15,8 @@ FreeSpace::FreeSpace(const VoxelBand& band)
   // block [2c - 1, 2c + 2], clipped to the mask.
   for (const CellCoord& c : band.coords()) {
     const Eigen::Vector3i lo = (2 * c - Eigen::Vector3i::Ones()).cwiseMax(0);
-    const Eigen::Vector3i hi = (2 * c + Eigen::Vector3i::Constant(2)).cwiseMin(dims_ - Eigen::Vector3i::Ones());
+    const Eigen::Vector3i hi =
+      (2 * c + Eigen::Vector3i::Constant(2)).cwiseMin(dims_ - Eigen::Vector3i::Ones());
     const int run = hi.x() - lo.x() + 1;
     for (int z = lo.z(); z <= hi.z(); ++z)
       for (int y = lo.y(); y <= hi.y(); ++y) {
@@ -34,7 +35,8 @@ FreeSpace::FreeSpace(const VoxelBand& band)
 std::uint64_t
 FreeSpace::estimateBytes(const GridSpec& grid)
 {
-  const std::uint64_t bits = std::uint64_t{8} * static_cast<std::uint64_t>(grid.dims.x()) *
+  const std::uint64_t bits = std::uint64_t{8} *
+                             static_cast<std::uint64_t>(grid.dims.x()) *
                              static_cast<std::uint64_t>(grid.dims.y()) *
                              static_cast<std::uint64_t>(grid.dims.z());
   return (bits + 63) / 64 * sizeof(std::uint64_t);

@@ -8,7 +8,9 @@
 namespace visfeat {
 
 GridSpec
-GridSpec::fromBounds(const Eigen::Vector3d& min, const Eigen::Vector3d& max, int resolution)
+GridSpec::fromBounds(const Eigen::Vector3d& min,
+                     const Eigen::Vector3d& max,
+                     int resolution)
 {
   if (resolution < kMinResolution || resolution > kMaxResolution) {
     std::ostringstream msg;
@@ -29,10 +31,12 @@ GridSpec::fromBounds(const Eigen::Vector3d& min, const Eigen::Vector3d& max, int
   grid.cell_size = extent / resolution;
   // Points are floats: a cell must span many representable values, or the cells
   // would depend on rounding rather than on the geometry.
-  const double magnitude = std::max(min.cwiseAbs().maxCoeff(), max.cwiseAbs().maxCoeff());
+  const double magnitude =
+    std::max(min.cwiseAbs().maxCoeff(), max.cwiseAbs().maxCoeff());
   if (grid.cell_size < 64.0 * std::numeric_limits<float>::epsilon() * magnitude) {
     std::ostringstream msg;
-    msg << "cell size " << grid.cell_size << " is below the float precision of coordinates of "
+    msg << "cell size " << grid.cell_size
+        << " is below the float precision of coordinates of "
         << "magnitude " << magnitude
         << ": lower the resolution or move the cloud near the origin";
     throw Error(msg.str());
@@ -40,7 +44,8 @@ GridSpec::fromBounds(const Eigen::Vector3d& min, const Eigen::Vector3d& max, int
   grid.origin = min - Eigen::Vector3d::Constant(kPadding * grid.cell_size);
   for (int a = 0; a < 3; ++a) {
     const double cells = std::floor(size[a] / grid.cell_size);
-    grid.dims[a] = static_cast<int>(std::min(cells, double(resolution))) + 1 + 2 * kPadding;
+    grid.dims[a] =
+      static_cast<int>(std::min(cells, double(resolution))) + 1 + 2 * kPadding;
   }
   return grid;
 }

@@ -23,7 +23,8 @@ decomposeLatticeSegment(const Eigen::Vector3i& d)
   if (d.isZero())
     return stretches;
 
-  // Every crossing of an integer plane happens at t = n / L, L = lcm of the nonzero |d_a|.
+  // Every crossing of an integer plane happens at t = n / L, L = lcm of the nonzero
+  // |d_a|.
   std::int64_t L = 1;
   for (int a = 0; a < 3; ++a)
     if (d[a] != 0)
@@ -47,8 +48,7 @@ decomposeLatticeSegment(const Eigen::Vector3i& d)
       if (d[a] == 0) {
         lo[a] = -1; // on the plane x_a = 0: subcells -1 and 0
         count[a] = 2;
-      }
-      else {
+      } else {
         lo[a] = floorDiv(static_cast<std::int64_t>(d[a]) * (n0 + n1), 2 * L);
         count[a] = 1;
       }
@@ -59,8 +59,9 @@ decomposeLatticeSegment(const Eigen::Vector3i& d)
     for (std::int64_t z = 0; z < count[2]; ++z)
       for (std::int64_t y = 0; y < count[1]; ++y)
         for (std::int64_t x = 0; x < count[0]; ++x)
-          s.subcells[static_cast<std::size_t>(s.count++)] = Eigen::Vector3i(
-              static_cast<int>(lo[0] + x), static_cast<int>(lo[1] + y), static_cast<int>(lo[2] + z));
+          s.subcells[static_cast<std::size_t>(s.count++)] =
+            Eigen::Vector3i(static_cast<int>(lo[0] + x), static_cast<int>(lo[1] + y),
+                            static_cast<int>(lo[2] + z));
     stretches.push_back(s);
   }
   return stretches;

@@ -37,12 +37,15 @@ formatBytes(std::uint64_t bytes)
 }
 
 void
-checkMemory(std::uint64_t estimate_bytes, std::uint64_t limit_bytes, const std::string& what)
+checkMemory(std::uint64_t estimate_bytes,
+            std::uint64_t limit_bytes,
+            const std::string& what)
 {
   const std::uint64_t limit = limit_bytes > 0 ? limit_bytes : defaultMemoryLimitBytes();
   if (estimate_bytes > limit)
-    throw Error(what + " needs about " + formatBytes(estimate_bytes) + ", more than the limit of " +
-                formatBytes(limit) + ": lower the resolution or raise the memory limit");
+    throw Error(what + " needs about " + formatBytes(estimate_bytes) +
+                ", more than the limit of " + formatBytes(limit) +
+                ": lower the resolution or raise the memory limit");
 }
 
 } // namespace visfeat

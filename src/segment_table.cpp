@@ -18,7 +18,8 @@ inFreeBlock(const Eigen::Vector3i& s)
 } // namespace
 
 SegmentTable::SegmentTable(const FreeSpace& free_space, int max_distance)
-: free_space_(&free_space), max_distance_(max_distance)
+    : free_space_(&free_space)
+    , max_distance_(max_distance)
 {
   if (max_distance < 0)
     throw Error("segment table: negative distance");
@@ -46,9 +47,10 @@ SegmentTable::SegmentTable(const FreeSpace& free_space, int max_distance)
           if (!always_free)
             kept.push_back(s);
         }
-        std::stable_sort(kept.begin(), kept.end(), [](const SegmentStretch& a, const SegmentStretch& b) {
-          return std::abs(a.t_mid - 0.5) < std::abs(b.t_mid - 0.5);
-        });
+        std::stable_sort(kept.begin(), kept.end(),
+                         [](const SegmentStretch& a, const SegmentStretch& b) {
+                           return std::abs(a.t_mid - 0.5) < std::abs(b.t_mid - 0.5);
+                         });
         Span& span = spans_[spanIndex(d)];
         span.single_begin = static_cast<std::int32_t>(singles_.size());
         span.multi_begin = static_cast<std::int32_t>(multis_.size());
@@ -57,12 +59,11 @@ SegmentTable::SegmentTable(const FreeSpace& free_space, int max_distance)
           if (s.count == 1) {
             singles_.push_back(linear(s.subcells[0]));
             single_length_.push_back(length);
-          }
-          else {
+          } else {
             std::array<std::int64_t, 4> q;
             for (int i = 0; i < 4; ++i) // pad a pair by repeating it
               q[static_cast<std::size_t>(i)] =
-                  linear(s.subcells[static_cast<std::size_t>(i % s.count)]);
+                linear(s.subcells[static_cast<std::size_t>(i % s.count)]);
             multis_.push_back(q);
             multi_length_.push_back(length);
           }

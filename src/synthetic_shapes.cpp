@@ -11,7 +11,7 @@ namespace synthetic {
 namespace {
 
 /** Triangulated hull of a small convex vertex set: every supporting plane through three
-  * vertices is a face; its vertices, sorted by angle, are fanned into triangles. */
+ * vertices is a face; its vertices, sorted by angle, are fanned into triangles. */
 TriangleMesh
 convexHull(std::vector<Eigen::Vector3d> vertices)
 {
@@ -25,7 +25,8 @@ convexHull(std::vector<Eigen::Vector3d> vertices)
   for (int i = 0; i < n; ++i)
     for (int j = i + 1; j < n; ++j)
       for (int k = j + 1; k < n; ++k) {
-        Eigen::Vector3d normal = (vertices[j] - vertices[i]).cross(vertices[k] - vertices[i]);
+        Eigen::Vector3d normal =
+          (vertices[j] - vertices[i]).cross(vertices[k] - vertices[i]);
         if (normal.norm() < 1e-9)
           continue;
         normal.normalize();
@@ -77,7 +78,9 @@ TriangleMesh::area() const
 {
   double sum = 0.0;
   for (const auto& t : triangles)
-    sum += 0.5 * (vertices[t[1]] - vertices[t[0]]).cross(vertices[t[2]] - vertices[t[0]]).norm();
+    sum +=
+      0.5 *
+      (vertices[t[1]] - vertices[t[0]]).cross(vertices[t[2]] - vertices[t[0]]).norm();
   return sum;
 }
 
@@ -108,7 +111,8 @@ cube()
 TriangleMesh
 octahedron()
 {
-  return convexHull({{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}});
+  return convexHull(
+    {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}});
 }
 
 TriangleMesh
@@ -184,8 +188,8 @@ sampleSurface(const TriangleMesh& mesh, std::size_t count, std::uint64_t seed)
   double total = 0.0;
   for (const auto& t : mesh.triangles) {
     total += 0.5 * (mesh.vertices[t[1]] - mesh.vertices[t[0]])
-                       .cross(mesh.vertices[t[2]] - mesh.vertices[t[0]])
-                       .norm();
+                     .cross(mesh.vertices[t[2]] - mesh.vertices[t[0]])
+                     .norm();
     cumulative.push_back(total);
   }
   std::vector<Eigen::Vector3f> points;
@@ -197,9 +201,10 @@ sampleSurface(const TriangleMesh& mesh, std::size_t count, std::uint64_t seed)
   for (std::size_t i = 0; i < count; ++i) {
     const double pick = unit(rng) * total;
     const std::size_t t = std::min<std::size_t>(
-        static_cast<std::size_t>(std::lower_bound(cumulative.begin(), cumulative.end(), pick) -
-                                 cumulative.begin()),
-        cumulative.size() - 1);
+      static_cast<std::size_t>(
+        std::lower_bound(cumulative.begin(), cumulative.end(), pick) -
+        cumulative.begin()),
+      cumulative.size() - 1);
     const double r1 = std::sqrt(unit(rng)), r2 = unit(rng);
     const auto& tri = mesh.triangles[t];
     const Eigen::Vector3d p = (1.0 - r1) * mesh.vertices[tri[0]] +

@@ -6,5 +6,6 @@
 #include <pcl/impl/instantiate.hpp>
 #include <pcl/point_types.h>
 
-PCL_INSTANTIATE_PRODUCT(VisibilityFeatureEstimation, (PCL_XYZ_POINT_TYPES)((visfeat::PointVisibility)))
+PCL_INSTANTIATE_PRODUCT(VisibilityFeatureEstimation,
+                        (PCL_XYZ_POINT_TYPES)((visfeat::PointVisibility)))
 #endif

@@ -12,10 +12,12 @@ namespace visfeat {
 namespace {
 
 /** Per-thread scratch for the ring BFS: visit marks need no clearing between cells
-  * because each cell uses its own id + 1 as the mark. */
+ * because each cell uses its own id + 1 as the mark. */
 struct RingScratch
 {
-  explicit RingScratch(std::size_t cells) : mark(cells, 0) {}
+  explicit RingScratch(std::size_t cells)
+      : mark(cells, 0)
+  {}
   std::vector<std::uint32_t> mark;
   std::vector<CellId> ring, next;
 };
@@ -61,9 +63,11 @@ VisibilityMap::validate(const Parameters& p)
 {
   std::ostringstream msg;
   if (p.max_radius < 1 || p.max_radius > kMaxRadius)
-    msg << "max_radius " << p.max_radius << " is out of range [1, " << kMaxRadius << "] (rings)";
+    msg << "max_radius " << p.max_radius << " is out of range [1, " << kMaxRadius
+        << "] (rings)";
   else if (!std::isfinite(p.opacity) || p.opacity < 0.0 || p.opacity > kMaxOpacity)
-    msg << "opacity " << p.opacity << " is out of range [0, " << kMaxOpacity << "] (cell edges)";
+    msg << "opacity " << p.opacity << " is out of range [0, " << kMaxOpacity
+        << "] (cell edges)";
   else if (p.threads < 0 || p.threads > kMaxThreads)
     msg << "threads " << p.threads << " is out of range [0, " << kMaxThreads
         << "] (0 = all available)";
@@ -87,7 +91,8 @@ VisibilityMap::compute(const VoxelBand& band,
   map.radii_.assign(n, 0);
   const SegmentTable table(free_space, parameters.max_radius);
 
-  const int threads = parameters.threads > 0 ? parameters.threads : omp_get_max_threads();
+  const int threads =
+    parameters.threads > 0 ? parameters.threads : omp_get_max_threads();
   constexpr std::int64_t kChunk = 512;
   std::atomic<std::size_t> done{0};
   std::uint64_t tests = 0;
@@ -95,13 +100,16 @@ VisibilityMap::compute(const VoxelBand& band,
   {
     RingScratch scratch(n);
 #pragma omp for schedule(dynamic, 1)
-    for (std::int64_t chunk = 0; chunk < (static_cast<std::int64_t>(n) + kChunk - 1) / kChunk; ++chunk) {
-      const std::int64_t end = std::min<std::int64_t>(static_cast<std::int64_t>(n), (chunk + 1) * kChunk);
+    for (std::int64_t chunk = 0;
+         chunk < (static_cast<std::int64_t>(n) + kChunk - 1) / kChunk; ++chunk) {
+      const std::int64_t end =
+        std::min<std::int64_t>(static_cast<std::int64_t>(n), (chunk + 1) * kChunk);
       for (std::int64_t c = chunk * kChunk; c < end; ++c)
-        map.radii_[static_cast<std::size_t>(c)] = static_cast<std::uint8_t>(
-            radiusOf(static_cast<CellId>(c), band, free_space, table, parameters, scratch, tests));
-      const std::size_t so_far = done.fetch_add(static_cast<std::size_t>(end - chunk * kChunk)) +
-                                 static_cast<std::size_t>(end - chunk * kChunk);
+        map.radii_[static_cast<std::size_t>(c)] = static_cast<std::uint8_t>(radiusOf(
+          static_cast<CellId>(c), band, free_space, table, parameters, scratch, tests));
+      const std::size_t so_far =
+        done.fetch_add(static_cast<std::size_t>(end - chunk * kChunk)) +
+        static_cast<std::size_t>(end - chunk * kChunk);
       if (progress && omp_get_thread_num() == 0)
         progress(so_far, n);
     }

@@ -30,21 +30,25 @@ diagonalSteps()
 class BandRepair
 {
 public:
-  BandRepair(const GridSpec& grid, std::vector<CellCoord>& coords, std::vector<std::uint32_t>& counts,
+  BandRepair(const GridSpec& grid,
+             std::vector<CellCoord>& coords,
+             std::vector<std::uint32_t>& counts,
              std::vector<Eigen::Vector3d>& sums)
-  : coords_(coords), counts_(counts), sums_(sums), index_(grid.dims)
+      : coords_(coords)
+      , counts_(counts)
+      , sums_(sums)
+      , index_(grid.dims)
   {
     for (std::size_t i = 0; i < coords_.size(); ++i)
       index_.insert(coords_[i], static_cast<CellId>(i));
   }
 
-  std::size_t
-  run()
+  std::size_t run()
   {
     const std::vector<CellCoord> steps = diagonalSteps();
     std::size_t added = 0;
-    // Cells added on the way are appended and visited too, so they get repaired as well;
-    // every pair is seen from both ends, the first visit decides.
+    // Cells added on the way are appended and visited too, so they get repaired as
+    // well; every pair is seen from both ends, the first visit decides.
     for (std::size_t i = 0; i < coords_.size(); ++i)
       for (const CellCoord& step : steps) {
         const CellCoord other = coords_[i] + step;
@@ -56,14 +60,9 @@ public:
   }
 
 private:
-  bool
-  mixed(const CellCoord& c) const
-  {
-    return index_.find(c) != kNoCell;
-  }
+  bool mixed(const CellCoord& c) const { return index_.find(c) != kNoCell; }
 
-  void
-  add(const CellCoord& c)
+  void add(const CellCoord& c)
   {
     index_.insert(c, static_cast<CellId>(coords_.size()));
     coords_.push_back(c);
@@ -72,8 +71,7 @@ private:
   }
 
   /** Centroid of the points of both cells (cell units), centres for cells without. */
-  Eigen::Vector3d
-  pairCentroid(CellId a, CellId b) const
+  Eigen::Vector3d pairCentroid(CellId a, CellId b) const
   {
     const std::uint64_t n = std::uint64_t{counts_[a]} + counts_[b];
     if (n == 0)
@@ -82,15 +80,14 @@ private:
     return (sums_[a] + sums_[b]) / static_cast<double>(n);
   }
 
-  double
-  distance(const CellCoord& c, const Eigen::Vector3d& p) const
+  double distance(const CellCoord& c, const Eigen::Vector3d& p) const
   {
     return (c.cast<double>() + Eigen::Vector3d::Constant(0.5) - p).squaredNorm();
   }
 
-  /** Adds the fewest cells of the 2x2x2 box of a and b so they are 6-connected in it. */
-  std::size_t
-  connect(CellId a, CellId b)
+  /** Adds the fewest cells of the 2x2x2 box of a and b so they are 6-connected in it.
+   */
+  std::size_t connect(CellId a, CellId b)
   {
     const CellCoord ca = coords_[a];
     const CellCoord step = coords_[b] - ca;
@@ -109,15 +106,16 @@ private:
       return 1;
     }
 
-    // Corner pair: monotone paths a -> a+u -> a+u+v -> b over the 6 axis orders (any path
-    // inside the box implies a monotone one).
+    // Corner pair: monotone paths a -> a+u -> a+u+v -> b over the 6 axis orders (any
+    // path inside the box implies a monotone one).
     static const int kOrders[6][2] = {{0, 1}, {0, 2}, {1, 0}, {1, 2}, {2, 0}, {2, 1}};
     std::array<bool, 3> first_mixed, second_mixed; // a + u_i, b - u_i
     for (int i = 0; i < 3; ++i) {
       first_mixed[i] = mixed(ca + units[i]);
       second_mixed[i] = mixed(coords_[b] - units[i]);
     }
-    for (const auto& order : kOrders) // second cell of order (i, j) is b - u_k, k the third axis
+    for (const auto& order :
+         kOrders) // second cell of order (i, j) is b - u_k, k the third axis
       if (first_mixed[order[0]] && second_mixed[3 - order[0] - order[1]])
         return 0;
 
@@ -213,7 +211,9 @@ VoxelBand::build(const GridSpec& grid,
 }
 
 VoxelBand
-VoxelBand::fromCells(const GridSpec& grid, const std::vector<CellCoord>& cells, const Options& options)
+VoxelBand::fromCells(const GridSpec& grid,
+                     const std::vector<CellCoord>& cells,
+                     const Options& options)
 {
   std::vector<OccupiedCell> occupied(cells.size());
   const std::int64_t half = static_cast<std::int64_t>(OccupiedCell::kOffsetScale / 2);
@@ -252,18 +252,21 @@ VoxelBand::finalize(std::vector<CellCoord> coords, std::vector<std::uint32_t> co
 std::uint64_t
 VoxelBand::memoryBytes() const
 {
-  return coords_.capacity() * sizeof(CellCoord) + point_counts_.capacity() * sizeof(std::uint32_t) +
-         neighbours_.capacity() * sizeof(Neighbours) + point_cell_.capacity() * sizeof(CellId) +
-         index_.memoryBytes();
+  return coords_.capacity() * sizeof(CellCoord) +
+         point_counts_.capacity() * sizeof(std::uint32_t) +
+         neighbours_.capacity() * sizeof(Neighbours) +
+         point_cell_.capacity() * sizeof(CellId) + index_.memoryBytes();
 }
 
 std::uint64_t
 VoxelBand::estimateBytes(const GridSpec& grid, std::size_t cells, std::size_t points)
 {
   // coords, counts, neighbours, repair sums; index bricks (~1 per 8 cells on a surface)
-  const std::uint64_t per_cell = sizeof(CellCoord) + sizeof(std::uint32_t) + sizeof(Neighbours) +
-                                 sizeof(Eigen::Vector3d) + 512 * sizeof(CellId) / 8;
-  return CellIndex::tableBytes(grid.dims) * 2 + per_cell * cells + sizeof(CellId) * points;
+  const std::uint64_t per_cell = sizeof(CellCoord) + sizeof(std::uint32_t) +
+                                 sizeof(Neighbours) + sizeof(Eigen::Vector3d) +
+                                 512 * sizeof(CellId) / 8;
+  return CellIndex::tableBytes(grid.dims) * 2 + per_cell * cells +
+         sizeof(CellId) * points;
 }
 
 } // namespace visfeat

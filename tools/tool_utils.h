@@ -30,7 +30,6 @@
 #include <system_error>
 #include <vector>
 
-
 namespace visfeat_tools {
 
 namespace fs = std::filesystem;

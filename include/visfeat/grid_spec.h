@@ -10,12 +10,12 @@ namespace visfeat {
 using CellCoord = Eigen::Vector3i;
 
 /** \brief The regular grid the band lives in: origin, cell size and dimensions.
-  *
-  * Cell (i, j, k) spans origin + cell_size * [i, i+1) x [j, j+1) x [k, k+1).
-  * A grid made by fromBounds() follows DESIGN.md: cell_size = extent / resolution,
-  * where extent is the largest side of the bounding box, and a padding of
-  * kPadding cells on every side so that every dilation stays inside the grid.
-  */
+ *
+ * Cell (i, j, k) spans origin + cell_size * [i, i+1) x [j, j+1) x [k, k+1).
+ * A grid made by fromBounds() follows DESIGN.md: cell_size = extent / resolution,
+ * where extent is the largest side of the bounding box, and a padding of
+ * kPadding cells on every side so that every dilation stays inside the grid.
+ */
 struct GridSpec
 {
   /** \brief Cells of padding around the bounding box on each side. */
@@ -30,38 +30,35 @@ struct GridSpec
   Eigen::Vector3i dims{0, 0, 0};
 
   /** \brief The grid of DESIGN.md for the box [min, max] and a resolution.
-    * \throws visfeat::Error when the resolution is outside
-    * [kMinResolution, kMaxResolution], or the box is empty, a single point or not finite.
-    */
+   * \throws visfeat::Error when the resolution is outside
+   * [kMinResolution, kMaxResolution], or the box is empty, a single point or not
+   * finite.
+   */
   static GridSpec
   fromBounds(const Eigen::Vector3d& min, const Eigen::Vector3d& max, int resolution);
 
   /** \brief Number of cells of the grid. */
-  std::uint64_t
-  cellCount() const
+  std::uint64_t cellCount() const
   {
     return static_cast<std::uint64_t>(dims.x()) * dims.y() * dims.z();
   }
 
-  bool
-  contains(const CellCoord& c) const
+  bool contains(const CellCoord& c) const
   {
     return (c.array() >= 0).all() && (c.array() < dims.array()).all();
   }
 
   /** \brief Linear key of a cell, x fastest; sorting by it sorts cells z-major. */
-  std::uint64_t
-  linearKey(const CellCoord& c) const
+  std::uint64_t linearKey(const CellCoord& c) const
   {
     return static_cast<std::uint64_t>(c.x()) +
            static_cast<std::uint64_t>(dims.x()) *
-               (static_cast<std::uint64_t>(c.y()) +
-                static_cast<std::uint64_t>(dims.y()) * static_cast<std::uint64_t>(c.z()));
+             (static_cast<std::uint64_t>(c.y()) +
+              static_cast<std::uint64_t>(dims.y()) * static_cast<std::uint64_t>(c.z()));
   }
 
   /** \brief World position of the centre of a cell. */
-  Eigen::Vector3d
-  cellCenter(const CellCoord& c) const
+  Eigen::Vector3d cellCenter(const CellCoord& c) const
   {
     return origin + cell_size * (c.cast<double>().array() + 0.5).matrix();
   }

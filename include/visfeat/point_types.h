@@ -17,11 +17,11 @@ enum class FeatureClass : std::uint8_t
 };
 
 /** \brief Per-point output of VisibilityFeatureEstimation.
-  *
-  * - visibility_radius: the visibility radius of the point's cell (NaN for NaN input)
-  * - label: the component (region) id, 0 = none; pcl_viewer colours by it by default
-  * - feature_class: a FeatureClass value (0 none, 1 vertex, 2 edge, 3 face)
-  */
+ *
+ * - visibility_radius: the visibility radius of the point's cell (NaN for NaN input)
+ * - label: the component (region) id, 0 = none; pcl_viewer colours by it by default
+ * - feature_class: a FeatureClass value (0 none, 1 vertex, 2 edge, 3 face)
+ */
 struct EIGEN_ALIGN16 PointVisibility
 {
   PCL_ADD_POINT4D;
@@ -29,10 +29,16 @@ struct EIGEN_ALIGN16 PointVisibility
   std::uint32_t label;
   std::uint8_t feature_class;
 
-  inline PointVisibility() : PointVisibility(0.f, 0.f, 0.f) {}
+  inline PointVisibility()
+      : PointVisibility(0.f, 0.f, 0.f)
+  {}
 
-  inline PointVisibility(float _x, float _y, float _z, float _radius = 0.f,
-                         std::uint32_t _label = 0, std::uint8_t _class = 0)
+  inline PointVisibility(float _x,
+                         float _y,
+                         float _z,
+                         float _radius = 0.f,
+                         std::uint32_t _label = 0,
+                         std::uint8_t _class = 0)
   {
     x = _x;
     y = _y;
@@ -47,7 +53,7 @@ struct EIGEN_ALIGN16 PointVisibility
 };
 
 /** \brief One mixed cell of the band, at the cell's centre (the tool's -voxels dump).
-  * i, j, k are the cell's integer grid coordinates. */
+ * i, j, k are the cell's integer grid coordinates. */
 struct EIGEN_ALIGN16 PointVoxel
 {
   PCL_ADD_POINT4D;

@@ -9,38 +9,33 @@
 namespace visfeat {
 
 /** \brief The segment test, precomputed once for every cell offset on the lattice.
-  *
-  * Whether cell c sees cell c + d depends on d and on the free-space bits along the
-  * segment; the decomposition of the segment into stretches depends on d alone. The
-  * table stores, for every offset d with |d|_1 <= max_distance (the offsets the
-  * visibility rings can reach), the linear mask offsets of the subcells of each stretch,
-  * so a test is a handful of bit loads with no geometry and no tree descent.
-  *
-  * Stretches that touch the 4x4x4 block of subcells around either end are left out:
-  * those subcells belong to a mixed cell or touch one, so they are always free. The
-  * remaining stretches are ordered from the middle of the segment outwards, where a
-  * blocked segment is most often blocked.
-  */
+ *
+ * Whether cell c sees cell c + d depends on d and on the free-space bits along the
+ * segment; the decomposition of the segment into stretches depends on d alone. The
+ * table stores, for every offset d with |d|_1 <= max_distance (the offsets the
+ * visibility rings can reach), the linear mask offsets of the subcells of each stretch,
+ * so a test is a handful of bit loads with no geometry and no tree descent.
+ *
+ * Stretches that touch the 4x4x4 block of subcells around either end are left out:
+ * those subcells belong to a mixed cell or touch one, so they are always free. The
+ * remaining stretches are ordered from the middle of the segment outwards, where a
+ * blocked segment is most often blocked.
+ */
 class SegmentTable
 {
 public:
   SegmentTable() = default;
 
   /** \brief Tables for one free-space mask (its strides) and all offsets with
-    * |d|_1 <= max_distance. */
+   * |d|_1 <= max_distance. */
   SegmentTable(const FreeSpace& free_space, int max_distance);
 
-  int
-  maxDistance() const
-  {
-    return max_distance_;
-  }
+  int maxDistance() const { return max_distance_; }
 
   /** \brief Whether cell c sees cell c + d (|d|_1 <= maxDistance()), where
-    * base = free_space.linearIndex(FreeSpace::centre(c)); same rule as FreeSpace::sees.
-    * The FreeSpace given to the constructor must still be alive. */
-  bool
-  sees(std::int64_t base, const Eigen::Vector3i& d, double opacity) const
+   * base = free_space.linearIndex(FreeSpace::centre(c)); same rule as FreeSpace::sees.
+   * The FreeSpace given to the constructor must still be alive. */
+  bool sees(std::int64_t base, const Eigen::Vector3i& d, double opacity) const
   {
     const Span& span = spans_[spanIndex(d)];
     const std::uint64_t* words = words_;
@@ -74,12 +69,10 @@ public:
   }
 
   /** \brief Convenience: cells a and b (|b - a|_1 <= maxDistance()). */
-  bool
-  sees(const CellCoord& a, const CellCoord& b, double opacity) const;
+  bool sees(const CellCoord& a, const CellCoord& b, double opacity) const;
 
   /** \brief Stretch checks stored for offset d (for tests and benchmarks). */
-  std::size_t
-  checksFor(const Eigen::Vector3i& d) const;
+  std::size_t checksFor(const Eigen::Vector3i& d) const;
 
 private:
   struct Span
@@ -88,12 +81,12 @@ private:
     std::int32_t multi_begin = 0, multi_end = 0;
   };
 
-  std::size_t
-  spanIndex(const Eigen::Vector3i& d) const
+  std::size_t spanIndex(const Eigen::Vector3i& d) const
   {
     const int w = 2 * max_distance_ + 1;
-    return static_cast<std::size_t>((d.x() + max_distance_) +
-                                    w * ((d.y() + max_distance_) + w * (d.z() + max_distance_)));
+    return static_cast<std::size_t>(
+      (d.x() + max_distance_) +
+      w * ((d.y() + max_distance_) + w * (d.z() + max_distance_)));
   }
 
   const FreeSpace* free_space_ = nullptr;

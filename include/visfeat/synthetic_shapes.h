@@ -17,47 +17,37 @@ struct TriangleMesh
   std::vector<Eigen::Vector3d> vertices;
   std::vector<std::array<int, 3>> triangles;
 
-  double
-  area() const;
+  double area() const;
 
-  Eigen::AlignedBox3d
-  bounds() const;
+  Eigen::AlignedBox3d bounds() const;
 };
 
 /** \brief Platonic solids centred at the origin with circumradius 1. */
-TriangleMesh
-tetrahedron();
-TriangleMesh
-cube();
-TriangleMesh
-octahedron();
-TriangleMesh
-icosahedron();
+TriangleMesh tetrahedron();
+TriangleMesh cube();
+TriangleMesh octahedron();
+TriangleMesh icosahedron();
 
 /** \brief The mesh of a named shape (the names of shapeNames()).
-  * \throws visfeat::Error for an unknown name, listing the known ones. */
-TriangleMesh
-shapeByName(const std::string& name);
+ * \throws visfeat::Error for an unknown name, listing the known ones. */
+TriangleMesh shapeByName(const std::string& name);
 
 /** \brief Names accepted by shapeByName(). */
-std::vector<std::string>
-shapeNames();
+std::vector<std::string> shapeNames();
 
 /** \brief A uniformly random rotation, reproducible from the seed. */
-Eigen::Matrix3d
-randomRotation(std::uint64_t seed);
+Eigen::Matrix3d randomRotation(std::uint64_t seed);
 
 /** \brief The mesh with every vertex rotated. */
-TriangleMesh
-rotated(const TriangleMesh& mesh, const Eigen::Matrix3d& rotation);
+TriangleMesh rotated(const TriangleMesh& mesh, const Eigen::Matrix3d& rotation);
 
 /** \brief How many uniform samples give a mean spacing of about spacing_cells cells on
-  * a grid of `resolution` cells along the mesh's longest bounding-box side. */
+ * a grid of `resolution` cells along the mesh's longest bounding-box side. */
 std::size_t
 samplesForSpacing(const TriangleMesh& mesh, int resolution, double spacing_cells);
 
 /** \brief count points uniformly distributed over the surface (by area), reproducible
-  * from the seed. */
+ * from the seed. */
 std::vector<Eigen::Vector3f>
 sampleSurface(const TriangleMesh& mesh, std::size_t count, std::uint64_t seed);
 

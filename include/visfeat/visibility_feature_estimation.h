@@ -16,48 +16,48 @@ namespace visfeat {
 /** \brief Wall-clock milliseconds of each phase of the last compute(). */
 struct PhaseTimes
 {
-  double grid_ms = 0.0;        // bounding box and grid
-  double band_ms = 0.0;        // octree, mixed cells, repair, adjacency
-  double free_space_ms = 0.0;  // 2x2x2 subcell mask
-  double visibility_ms = 0.0;  // visibility map
-  double output_ms = 0.0;      // per-point fields
+  double grid_ms = 0.0;       // bounding box and grid
+  double band_ms = 0.0;       // octree, mixed cells, repair, adjacency
+  double free_space_ms = 0.0; // 2x2x2 subcell mask
+  double visibility_ms = 0.0; // visibility map
+  double output_ms = 0.0;     // per-point fields
 
-  double
-  total() const
+  double total() const
   {
     return grid_ms + band_ms + free_space_ms + visibility_ms + output_ms;
   }
 };
 
 /** \brief Visibility-based feature estimation (Chica et al., "Visibility-Based Feature
-  * Extraction From Discrete Models") as a pcl::Feature.
-  *
-  * The cloud is immersed in a grid of `resolution` cells along its longest side; the
-  * cells holding points form the band. For every band cell the visibility radius counts
-  * the successive rings of band cells around it that it fully sees; radii are high on
-  * face interiors, edges and corners, and drop in the valleys between them. Every
-  * output point gets the radius of its cell in `visibility_radius`.
-  *
-  * \code
-  * visfeat::VisibilityFeatureEstimation<pcl::PointXYZ, visfeat::PointVisibility> est;
-  * est.setInputCloud(cloud);
-  * est.setResolution(256);
-  * pcl::PointCloud<visfeat::PointVisibility> out;
-  * est.compute(out); // out.empty() on error, with the reason in getErrorMessage()
-  * \endcode
-  *
-  * No search tree is used: the estimator overrides initCompute(), so neither k nor a
-  * radius has to be set. The band is built from the search surface (the input unless
-  * setSearchSurface() was called); output is produced for the input's indices.
-  *
-  * PointOutT needs the fields x, y, z, visibility_radius, label and feature_class.
-  */
+ * Extraction From Discrete Models") as a pcl::Feature.
+ *
+ * The cloud is immersed in a grid of `resolution` cells along its longest side; the
+ * cells holding points form the band. For every band cell the visibility radius counts
+ * the successive rings of band cells around it that it fully sees; radii are high on
+ * face interiors, edges and corners, and drop in the valleys between them. Every
+ * output point gets the radius of its cell in `visibility_radius`.
+ *
+ * \code
+ * visfeat::VisibilityFeatureEstimation<pcl::PointXYZ, visfeat::PointVisibility> est;
+ * est.setInputCloud(cloud);
+ * est.setResolution(256);
+ * pcl::PointCloud<visfeat::PointVisibility> out;
+ * est.compute(out); // out.empty() on error, with the reason in getErrorMessage()
+ * \endcode
+ *
+ * No search tree is used: the estimator overrides initCompute(), so neither k nor a
+ * radius has to be set. The band is built from the search surface (the input unless
+ * setSearchSurface() was called); output is produced for the input's indices.
+ *
+ * PointOutT needs the fields x, y, z, visibility_radius, label and feature_class.
+ */
 template <typename PointInT, typename PointOutT = PointVisibility>
 class VisibilityFeatureEstimation : public pcl::Feature<PointInT, PointOutT>
 {
 public:
   using Ptr = std::shared_ptr<VisibilityFeatureEstimation<PointInT, PointOutT>>;
-  using ConstPtr = std::shared_ptr<const VisibilityFeatureEstimation<PointInT, PointOutT>>;
+  using ConstPtr =
+    std::shared_ptr<const VisibilityFeatureEstimation<PointInT, PointOutT>>;
   using PointCloudIn = typename pcl::Feature<PointInT, PointOutT>::PointCloudIn;
   using PointCloudOut = typename pcl::Feature<PointInT, PointOutT>::PointCloudOut;
 
@@ -70,121 +70,54 @@ public:
   }
 
   /** \brief Cells along the longest side of the bounding box (default 256).
-    * The paper's defaults (min_radius 11) are tuned for 256-768; below ~64 the
-    * valleys between features are too narrow to separate them. */
-  inline void
-  setResolution(int resolution)
-  {
-    resolution_ = resolution;
-  }
-  inline int
-  getResolution() const
-  {
-    return resolution_;
-  }
+   * The paper's defaults (min_radius 11) are tuned for 256-768; below ~64 the
+   * valleys between features are too narrow to separate them. */
+  inline void setResolution(int resolution) { resolution_ = resolution; }
+  inline int getResolution() const { return resolution_; }
 
   /** \brief Cap of the visibility radius in rings (default 11, range 1-64). */
-  inline void
-  setMaxRadius(int max_radius)
-  {
-    visibility_.max_radius = max_radius;
-  }
-  inline int
-  getMaxRadius() const
-  {
-    return visibility_.max_radius;
-  }
+  inline void setMaxRadius(int max_radius) { visibility_.max_radius = max_radius; }
+  inline int getMaxRadius() const { return visibility_.max_radius; }
 
   /** \brief Opacity in cell edges (default 0 = exact visibility; 3 for noisy scans). */
-  inline void
-  setOpacity(double opacity)
-  {
-    visibility_.opacity = opacity;
-  }
-  inline double
-  getOpacity() const
-  {
-    return visibility_.opacity;
-  }
+  inline void setOpacity(double opacity) { visibility_.opacity = opacity; }
+  inline double getOpacity() const { return visibility_.opacity; }
 
   /** \brief Make the band 6-connected by adding cells (default true). */
-  inline void
-  setBandRepair(bool repair)
-  {
-    band_options_.repair = repair;
-  }
-  inline bool
-  getBandRepair() const
-  {
-    return band_options_.repair;
-  }
+  inline void setBandRepair(bool repair) { band_options_.repair = repair; }
+  inline bool getBandRepair() const { return band_options_.repair; }
 
   /** \brief Threads for the visibility map; 0 (default) = all available. */
-  inline void
-  setNumberOfThreads(unsigned int threads)
+  inline void setNumberOfThreads(unsigned int threads)
   {
     visibility_.threads = static_cast<int>(threads);
   }
-  inline unsigned int
-  getNumberOfThreads() const
+  inline unsigned int getNumberOfThreads() const
   {
     return static_cast<unsigned int>(visibility_.threads);
   }
 
   /** \brief Refuse grids whose estimated memory exceeds this many bytes
-    * (default 0 = 3/4 of the physical memory). */
-  inline void
-  setMemoryLimit(std::uint64_t bytes)
-  {
-    memory_limit_ = bytes;
-  }
-  inline std::uint64_t
-  getMemoryLimit() const
-  {
-    return memory_limit_;
-  }
+   * (default 0 = 3/4 of the physical memory). */
+  inline void setMemoryLimit(std::uint64_t bytes) { memory_limit_ = bytes; }
+  inline std::uint64_t getMemoryLimit() const { return memory_limit_; }
 
   /** \brief Called during the visibility map with (cells done, cells total), from one
-    * thread at a time (see visfeat::ProgressCallback). */
-  inline void
-  setProgressCallback(const ProgressCallback& progress)
+   * thread at a time (see visfeat::ProgressCallback). */
+  inline void setProgressCallback(const ProgressCallback& progress)
   {
     progress_ = progress;
   }
 
   /** \brief The grid, band and map of the last successful compute(). */
-  inline const GridSpec&
-  getGrid() const
-  {
-    return band_.grid();
-  }
-  inline const VoxelBand&
-  getVoxelBand() const
-  {
-    return band_;
-  }
-  inline const FreeSpace&
-  getFreeSpace() const
-  {
-    return free_space_;
-  }
-  inline const VisibilityMap&
-  getVisibilityMap() const
-  {
-    return map_;
-  }
-  inline const PhaseTimes&
-  getPhaseTimes() const
-  {
-    return times_;
-  }
+  inline const GridSpec& getGrid() const { return band_.grid(); }
+  inline const VoxelBand& getVoxelBand() const { return band_; }
+  inline const FreeSpace& getFreeSpace() const { return free_space_; }
+  inline const VisibilityMap& getVisibilityMap() const { return map_; }
+  inline const PhaseTimes& getPhaseTimes() const { return times_; }
 
   /** \brief Why the last compute() produced an empty output ("" after success). */
-  inline const std::string&
-  getErrorMessage() const
-  {
-    return error_;
-  }
+  inline const std::string& getErrorMessage() const { return error_; }
 
 protected:
   using pcl::Feature<PointInT, PointOutT>::feature_name_;
@@ -197,15 +130,12 @@ protected:
   using pcl::Feature<PointInT, PointOutT>::search_radius_;
 
   /** \brief Checks input and parameters and builds the grid; no search tree. */
-  bool
-  initCompute() override;
+  bool initCompute() override;
 
-  void
-  computeFeature(PointCloudOut& output) override;
+  void computeFeature(PointCloudOut& output) override;
 
 private:
-  bool
-  fail(const std::string& message);
+  bool fail(const std::string& message);
 
   int resolution_ = 256;
   VoxelBand::Options band_options_;

@@ -1,10 +1,10 @@
 #pragma once
 
 #include <visfeat/error.h>
+#include <visfeat/impl/voxel_band_from_cloud.hpp>
 #include <visfeat/memory_budget.h>
 #include <visfeat/visibility_feature_estimation.h>
 #include <visfeat/voxel_band_from_cloud.h>
-#include <visfeat/impl/voxel_band_from_cloud.hpp>
 
 #include <pcl/common/point_tests.h>
 
@@ -20,8 +20,9 @@ namespace detail {
 inline double
 millisecondsSince(std::chrono::steady_clock::time_point start)
 {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-      .count();
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() -
+                                                   start)
+    .count();
 }
 
 } // namespace detail
@@ -57,22 +58,23 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::initCompute()
     const auto start = std::chrono::steady_clock::now();
     VisibilityMap::validate(visibility_);
     grid_ = gridForCloud(*surface_, resolution_);
-    // Refuse before allocating: the subcell mask dominates; cells are at most the points.
+    // Refuse before allocating: the subcell mask dominates; cells are at most the
+    // points.
     const std::size_t points = surface_->size();
-    const std::size_t cells = static_cast<std::size_t>(
-        std::min<std::uint64_t>(points, grid_.cellCount()));
-    const int threads = visibility_.threads > 0 ? visibility_.threads : omp_get_max_threads();
+    const std::size_t cells =
+      static_cast<std::size_t>(std::min<std::uint64_t>(points, grid_.cellCount()));
+    const int threads =
+      visibility_.threads > 0 ? visibility_.threads : omp_get_max_threads();
     const std::uint64_t octree_bytes = std::uint64_t{160} * cells + 4 * points;
-    const std::uint64_t estimate = FreeSpace::estimateBytes(grid_) +
-                                   VoxelBand::estimateBytes(grid_, cells, points) + octree_bytes +
-                                   std::uint64_t{4} * cells * static_cast<std::uint64_t>(threads);
+    const std::uint64_t estimate =
+      FreeSpace::estimateBytes(grid_) + VoxelBand::estimateBytes(grid_, cells, points) +
+      octree_bytes + std::uint64_t{4} * cells * static_cast<std::uint64_t>(threads);
     checkMemory(estimate, memory_limit_,
                 "a grid of " + std::to_string(grid_.dims.x()) + "x" +
-                    std::to_string(grid_.dims.y()) + "x" + std::to_string(grid_.dims.z()) +
-                    " cells");
+                  std::to_string(grid_.dims.y()) + "x" +
+                  std::to_string(grid_.dims.z()) + " cells");
     times_.grid_ms = detail::millisecondsSince(start);
-  }
-  catch (const Error& e) {
+  } catch (const Error& e) {
     this->deinitCompute();
     return fail(e.what());
   }
@@ -106,7 +108,8 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::computeFeature(PointCloudOut& 
       // Same arithmetic as the octree's keys, so a point of the surface finds its cell.
       CellCoord c;
       for (int a = 0; a < 3; ++a) {
-        const double u = (static_cast<double>(p.data[a]) - grid.origin[a]) / grid.cell_size;
+        const double u =
+          (static_cast<double>(p.data[a]) - grid.origin[a]) / grid.cell_size;
         if (!(u >= 0.0 && u < grid.dims[a]))
           return kNoCell;
         c[a] = static_cast<int>(u);
@@ -124,18 +127,17 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::computeFeature(PointCloudOut& 
       out.label = 0;
       out.feature_class = static_cast<std::uint8_t>(FeatureClass::kNone);
       const CellId cell = pcl::isXYZFinite(p) ? cellOf(index, p) : kNoCell;
-      out.visibility_radius = cell == kNoCell ? nan : static_cast<float>(map_.radius(cell));
+      out.visibility_radius =
+        cell == kNoCell ? nan : static_cast<float>(map_.radius(cell));
       dense = dense && cell != kNoCell;
     }
     output.is_dense = dense;
     times_.output_ms = detail::millisecondsSince(start);
-  }
-  catch (const Error& e) {
+  } catch (const Error& e) {
     fail(e.what());
     output.width = output.height = 0;
     output.clear();
-  }
-  catch (const std::bad_alloc&) {
+  } catch (const std::bad_alloc&) {
     fail("out of memory: lower the resolution");
     output.width = output.height = 0;
     output.clear();
@@ -144,5 +146,5 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::computeFeature(PointCloudOut& 
 
 } // namespace visfeat
 
-#define PCL_INSTANTIATE_VisibilityFeatureEstimation(T, OUTT)                             \
+#define PCL_INSTANTIATE_VisibilityFeatureEstimation(T, OUTT)                           \
   template class visfeat::VisibilityFeatureEstimation<T, OUTT>;

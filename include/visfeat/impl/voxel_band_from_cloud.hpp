@@ -16,8 +16,8 @@ namespace visfeat {
 namespace detail {
 
 /** Gives the octree the grid's box with a power-of-two side, so it neither grows nor
-  * recentres it: octree keys are then the grid's cell coordinates. Returns the origin
-  * the octree actually uses. */
+ * recentres it: octree keys are then the grid's cell coordinates. Returns the origin
+ * the octree actually uses. */
 template <typename Octree>
 Eigen::Vector3d
 defineOctreeBox(Octree& octree, const GridSpec& grid)
@@ -26,7 +26,8 @@ defineOctreeBox(Octree& octree, const GridSpec& grid)
   while (side < grid.cell_size * grid.dims.maxCoeff())
     side *= 2.0;
   octree.defineBoundingBox(grid.origin.x(), grid.origin.y(), grid.origin.z(),
-                           grid.origin.x() + side, grid.origin.y() + side, grid.origin.z() + side);
+                           grid.origin.x() + side, grid.origin.y() + side,
+                           grid.origin.z() + side);
   Eigen::Vector3d min, max;
   octree.getBoundingBox(min.x(), min.y(), min.z(), max.x(), max.y(), max.z());
   return min;
@@ -40,7 +41,8 @@ gridForCloud(const pcl::PointCloud<PointT>& cloud, int resolution)
 {
   if (cloud.empty())
     throw Error("the cloud is empty");
-  Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
+  Eigen::Vector3d lo =
+    Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
   Eigen::Vector3d hi = -lo;
   std::size_t finite = 0;
   for (const PointT& p : cloud.points) {
@@ -70,10 +72,11 @@ buildVoxelBand(const pcl::PointCloud<PointT>& cloud,
 {
   pcl::octree::OctreePointCloudPointVector<PointT> octree(grid.cell_size);
   if (detail::defineOctreeBox(octree, grid) != grid.origin)
-    throw Error("the octree moved the grid's origin: use gridForCloud() to make the grid");
+    throw Error(
+      "the octree moved the grid's origin: use gridForCloud() to make the grid");
   // Non-owning pointer: the octree reads the cloud only during this call.
-  const typename pcl::PointCloud<PointT>::ConstPtr input(&cloud,
-                                                         [](const pcl::PointCloud<PointT>*) {});
+  const typename pcl::PointCloud<PointT>::ConstPtr input(
+    &cloud, [](const pcl::PointCloud<PointT>*) {});
   // Finite points only (pcl::isFinite may also look at other fields), handed to the
   // octree brick by brick (8^3 cells, counting sort): descents then stay in cache. The
   // order changes no result: cells are renumbered and point sums are integers.
@@ -82,7 +85,8 @@ buildVoxelBand(const pcl::PointCloud<PointT>& cloud,
   auto brickOf = [&](const PointT& p) {
     std::size_t key = 0;
     for (int a = 2; a >= 0; --a) {
-      const double u = (static_cast<double>(p.data[a]) - grid.origin[a]) / grid.cell_size;
+      const double u =
+        (static_cast<double>(p.data[a]) - grid.origin[a]) / grid.cell_size;
       const int b = std::clamp(static_cast<int>(u) >> kBrickShift, 0, bricks[a] - 1);
       key = key * static_cast<std::size_t>(bricks[a]) + static_cast<std::size_t>(b);
     }
@@ -108,14 +112,16 @@ buildVoxelBand(const pcl::PointCloud<PointT>& cloud,
   for (auto it = octree.leaf_depth_begin(); it != octree.leaf_depth_end(); ++it) {
     const pcl::octree::OctreeKey& key = it.getCurrentOctreeKey();
     OccupiedCell cell;
-    cell.coord = CellCoord(static_cast<int>(key.x), static_cast<int>(key.y), static_cast<int>(key.z));
+    cell.coord = CellCoord(static_cast<int>(key.x), static_cast<int>(key.y),
+                           static_cast<int>(key.z));
     const Eigen::Vector3d cell_min =
-        grid.origin + grid.cell_size * cell.coord.template cast<double>();
+      grid.origin + grid.cell_size * cell.coord.template cast<double>();
     const auto entry = static_cast<std::int32_t>(occupied.size());
     for (const auto index : it.getLeafContainer().getPointIndicesVector()) {
       const PointT& p = cloud[static_cast<std::size_t>(index)];
       // offsets are >= 0: adding 0.5 and truncating rounds them
-      const Eigen::Vector3d offset = (Eigen::Vector3d(p.x, p.y, p.z) - cell_min) * scale;
+      const Eigen::Vector3d offset =
+        (Eigen::Vector3d(p.x, p.y, p.z) - cell_min) * scale;
       cell.offset_sum += (offset.array() + 0.5).template cast<std::int64_t>().matrix();
       ++cell.point_count;
       point_occupied[static_cast<std::size_t>(index)] = entry;
@@ -129,7 +135,8 @@ buildVoxelBand(const pcl::PointCloud<PointT>& cloud,
 
 } // namespace visfeat
 
-#define PCL_INSTANTIATE_VisfeatVoxelBandFromCloud(T)                                       \
-  template visfeat::GridSpec visfeat::gridForCloud<T>(const pcl::PointCloud<T>&, int);   \
-  template visfeat::VoxelBand visfeat::buildVoxelBand<T>(                                \
-      const pcl::PointCloud<T>&, const visfeat::GridSpec&, const visfeat::VoxelBand::Options&);
+#define PCL_INSTANTIATE_VisfeatVoxelBandFromCloud(T)                                   \
+  template visfeat::GridSpec visfeat::gridForCloud<T>(const pcl::PointCloud<T>&, int); \
+  template visfeat::VoxelBand visfeat::buildVoxelBand<T>(                              \
+    const pcl::PointCloud<T>&, const visfeat::GridSpec&,                               \
+    const visfeat::VoxelBand::Options&);
