@@ -3,24 +3,29 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
 #include <random>
 
 namespace visfeat {
 namespace synthetic {
 namespace {
 
-/** Triangulated hull of a small convex vertex set: every supporting plane through three
- * vertices is a face; its vertices, sorted by angle, are fanned into triangles. */
-TriangleMesh
-convexHull(std::vector<Eigen::Vector3d> vertices)
+/** A vertex set scaled to circumradius 1. */
+std::vector<Eigen::Vector3d>
+normalized(std::vector<Eigen::Vector3d> vertices)
 {
   for (auto& v : vertices)
-    v.normalize(); // circumradius 1
-  TriangleMesh mesh;
+    v.normalize();
+  return vertices;
+}
+
+} // namespace
+
+PolygonMesh
+convexHull(const std::vector<Eigen::Vector3d>& vertices)
+{
+  PolygonMesh mesh;
   mesh.vertices = vertices;
   const int n = static_cast<int>(vertices.size());
-  std::vector<std::vector<int>> faces;
   std::vector<Eigen::Vector3d> normals;
   for (int i = 0; i < n; ++i)
     for (int j = i + 1; j < n; ++j)
@@ -30,31 +35,32 @@ convexHull(std::vector<Eigen::Vector3d> vertices)
         if (normal.norm() < 1e-9)
           continue;
         normal.normalize();
-        double offset = normal.dot(vertices[i]);
-        if (offset < 0) {
-          normal = -normal;
-          offset = -offset;
-        }
-        bool supporting = true;
+        // A face when every vertex is on one side; the normal then points away from
+        // them (outwards).
+        const double offset = normal.dot(vertices[i]);
+        bool above = false, below = false;
         std::vector<int> on_plane;
-        for (int m = 0; m < n && supporting; ++m) {
+        for (int m = 0; m < n; ++m) {
           const double h = normal.dot(vertices[m]) - offset;
-          supporting = h < 1e-9;
+          above = above || h > 1e-9;
+          below = below || h < -1e-9;
           if (std::abs(h) < 1e-9)
             on_plane.push_back(m);
         }
-        if (!supporting)
+        if (above && below)
           continue;
+        if (above)
+          normal = -normal;
         bool known = false;
         for (const auto& nrm : normals)
           known = known || (nrm - normal).norm() < 1e-9;
         if (!known) {
-          faces.push_back(on_plane);
+          mesh.faces.push_back(on_plane);
           normals.push_back(normal);
         }
       }
-  for (std::size_t f = 0; f < faces.size(); ++f) {
-    std::vector<int>& face = faces[f];
+  for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
+    std::vector<int>& face = mesh.faces[f];
     Eigen::Vector3d centre = Eigen::Vector3d::Zero();
     for (int v : face)
       centre += vertices[v];
@@ -65,13 +71,20 @@ convexHull(std::vector<Eigen::Vector3d> vertices)
       const Eigen::Vector3d pa = vertices[a] - centre, pb = vertices[b] - centre;
       return std::atan2(pa.dot(w), pa.dot(u)) < std::atan2(pb.dot(w), pb.dot(u));
     });
-    for (std::size_t t = 1; t + 1 < face.size(); ++t)
-      mesh.triangles.push_back({face[0], face[t], face[t + 1]});
   }
   return mesh;
 }
 
-} // namespace
+TriangleMesh
+fanTriangulation(const PolygonMesh& mesh)
+{
+  TriangleMesh out;
+  out.vertices = mesh.vertices;
+  for (const std::vector<int>& face : mesh.faces)
+    for (std::size_t t = 1; t + 1 < face.size(); ++t)
+      out.triangles.push_back({face[0], face[t], face[t + 1]});
+  return out;
+}
 
 double
 TriangleMesh::area() const
@@ -93,63 +106,71 @@ TriangleMesh::bounds() const
   return box;
 }
 
-TriangleMesh
-tetrahedron()
-{
-  return convexHull({{1, 1, 1}, {1, -1, -1}, {-1, 1, -1}, {-1, -1, 1}});
-}
-
-TriangleMesh
-cube()
-{
-  std::vector<Eigen::Vector3d> v;
-  for (int i = 0; i < 8; ++i)
-    v.emplace_back(i & 1 ? 1 : -1, i & 2 ? 1 : -1, i & 4 ? 1 : -1);
-  return convexHull(v);
-}
-
-TriangleMesh
-octahedron()
-{
-  return convexHull(
-    {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}});
-}
-
-TriangleMesh
-icosahedron()
-{
-  const double phi = (1.0 + std::sqrt(5.0)) / 2.0;
-  std::vector<Eigen::Vector3d> v;
-  for (int a : {-1, 1})
-    for (int b : {-1, 1}) {
-      v.emplace_back(0, a, b * phi);
-      v.emplace_back(a, b * phi, 0);
-      v.emplace_back(b * phi, 0, a);
-    }
-  return convexHull(v);
-}
-
 std::vector<std::string>
 shapeNames()
 {
   return {"tetrahedron", "cube", "octahedron", "icosahedron"};
 }
 
-TriangleMesh
-shapeByName(const std::string& name)
+PolygonMesh
+platonicSolid(const std::string& name)
 {
   if (name == "tetrahedron")
-    return tetrahedron();
-  if (name == "cube")
-    return cube();
+    return convexHull(normalized({{1, 1, 1}, {1, -1, -1}, {-1, 1, -1}, {-1, -1, 1}}));
+  if (name == "cube") {
+    std::vector<Eigen::Vector3d> v;
+    for (int i = 0; i < 8; ++i)
+      v.emplace_back(i & 1 ? 1 : -1, i & 2 ? 1 : -1, i & 4 ? 1 : -1);
+    return convexHull(normalized(v));
+  }
   if (name == "octahedron")
-    return octahedron();
-  if (name == "icosahedron")
-    return icosahedron();
+    return convexHull(normalized(
+      {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}}));
+  if (name == "icosahedron") {
+    const double phi = (1.0 + std::sqrt(5.0)) / 2.0;
+    std::vector<Eigen::Vector3d> v;
+    for (int a : {-1, 1})
+      for (int b : {-1, 1}) {
+        v.emplace_back(0, a, b * phi);
+        v.emplace_back(a, b * phi, 0);
+        v.emplace_back(b * phi, 0, a);
+      }
+    return convexHull(normalized(v));
+  }
   std::string known;
   for (const auto& n : shapeNames())
     known += (known.empty() ? "" : ", ") + n;
   throw Error("unknown shape '" + name + "' (known: " + known + ")");
+}
+
+TriangleMesh
+tetrahedron()
+{
+  return fanTriangulation(platonicSolid("tetrahedron"));
+}
+
+TriangleMesh
+cube()
+{
+  return fanTriangulation(platonicSolid("cube"));
+}
+
+TriangleMesh
+octahedron()
+{
+  return fanTriangulation(platonicSolid("octahedron"));
+}
+
+TriangleMesh
+icosahedron()
+{
+  return fanTriangulation(platonicSolid("icosahedron"));
+}
+
+TriangleMesh
+shapeByName(const std::string& name)
+{
+  return fanTriangulation(platonicSolid(name));
 }
 
 Eigen::Matrix3d

@@ -96,6 +96,7 @@ TEST(Estimator, PerPointOutputFollowsTheMap)
   est.setInputCloud(cloud);
   est.setResolution(24);
   est.setMaxRadius(8);
+  est.setMinRadius(8); // components need min_radius <= max_radius
   est.setNumberOfThreads(2);
   Output out;
   est.compute(out);
@@ -144,6 +145,7 @@ TEST(Estimator, WholeChainMatchesReference)
     est.setInputCloud(cloud);
     est.setResolution(16);
     est.setMaxRadius(6);
+    est.setMinRadius(6); // components need min_radius <= max_radius
     est.setOpacity(opacity);
     Output out;
     est.compute(out);
@@ -174,6 +176,7 @@ TEST(Estimator, IndicesSelectTheOutputPoints)
     e->setInputCloud(cloud);
     e->setResolution(20);
     e->setMaxRadius(6);
+    e->setMinRadius(6); // components need min_radius <= max_radius
   }
   part.setIndices(indices);
   Output all, some;
@@ -211,6 +214,7 @@ TEST(Estimator, SameOutputForShuffledPointsAndThreadCounts)
   for (Estimator* e : {&ea, &eb, &ec}) {
     e->setResolution(24);
     e->setMaxRadius(9);
+    e->setMinRadius(9); // components need min_radius <= max_radius
     e->setOpacity(1.5);
   }
   ea.setNumberOfThreads(1);
@@ -241,6 +245,7 @@ TEST(Estimator, ErrorMessageClearedAfterSuccess)
   expectError(est, {"resolution"});
   est.setResolution(12);
   est.setMaxRadius(4);
+  est.setMinRadius(4); // components need min_radius <= max_radius
   Output out;
   est.compute(out);
   EXPECT_EQ(out.size(), cloud->size());

@@ -1,6 +1,7 @@
 # Smoke test of the command-line tools, run by ctest as
 #   cmake -DVISFEAT=<visfeat> -DGENERATE=<visfeat_generate> -DWORK_DIR=<dir> -P smoke_test.cmake
-# 1. visfeat_generate cube -> visfeat -voxels: exit codes, PCD headers (fields, POINTS).
+# 1. visfeat_generate cube -> visfeat -voxels: exit codes, PCD headers (fields, POINTS);
+#    every CAD model of visfeat_generate with its -truth JSON (counts).
 # 2. .ply input (double coordinates, upper-case extension) and an input that already has
 #    a label field.
 # 3. Bad inputs exit non-zero with an error line and leave no output (nor .tmp) file.
@@ -98,19 +99,22 @@ endfunction()
 
 set(xyz_fields "x y z visibility_radius label feature_class")
 set(voxel_fields "x y z i j k visibility_radius label feature_class")
+# visfeat_generate's fields; visfeat keeps them (after x y z) in its output.
+set(generated_fields "x y z curve_distance face_id")
+string(REPLACE "x y z" "${generated_fields}" cube_out_fields "${xyz_fields}")
 
 # --- 1. generate -> visfeat ---------------------------------------------------
 set(cube "${WORK_DIR}/cube.pcd")
 expect_success(generate "${GENERATE}" cube "${cube}" -resolution 48 -seed 3)
 read_pcd_header("${cube}" cube_fields cube_points)
-if(NOT cube_fields STREQUAL "x y z" OR NOT cube_points GREATER 0)
+if(NOT cube_fields STREQUAL generated_fields OR NOT cube_points GREATER 0)
   report_failure("${cube}: FIELDS '${cube_fields}', POINTS '${cube_points}'")
 endif()
 
 set(out "${WORK_DIR}/cube_out.pcd")
 set(cells "${WORK_DIR}/cube_cells.pcd")
 expect_success(visfeat "${VISFEAT}" "${cube}" "${out}" -resolution 48 -voxels "${cells}")
-expect_header("${out}" "${xyz_fields}" "${cube_points}")
+expect_header("${out}" "${cube_out_fields}" "${cube_points}")
 expect_header("${cells}" "${voxel_fields}" ">0")
 foreach(phase "Grid:" "Phases:" "Visibility radius")
   if(NOT visfeat_out MATCHES "${phase}")
@@ -119,12 +123,45 @@ foreach(phase "Grid:" "Phases:" "Visibility radius")
 endforeach()
 
 expect_success(visfeat_quiet "${VISFEAT}" "${cube}" "${WORK_DIR}/cube_q.pcd" -resolution 48
-               -q -threads 1 -opacity 1.5 -max_radius 4 -no_repair)
+               -q -threads 1 -opacity 1.5 -max_radius 4 -min_radius 4 -no_repair)
 string(STRIP "${visfeat_quiet_out}" quiet_out)
 if(NOT quiet_out STREQUAL "")
   report_failure("visfeat -q printed:\n${visfeat_quiet_out}")
 endif()
-expect_header("${WORK_DIR}/cube_q.pcd" "${xyz_fields}" "${cube_points}")
+expect_header("${WORK_DIR}/cube_q.pcd" "${cube_out_fields}" "${cube_points}")
+
+# Every CAD model, with its truth: the counts in the JSON and on stdout.
+# model vertices edges faces
+set(models
+  "cube 8 12 6" "tetrahedron 4 6 4" "icosahedron 12 30 20" "triangular_prism 6 9 5"
+  "u_prism 16 24 10" "box_with_hole 8 14 7" "cylinder 0 2 3")
+foreach(entry IN LISTS models)
+  separate_arguments(entry UNIX_COMMAND "${entry}")
+  list(GET entry 0 model)
+  list(GET entry 1 nv)
+  list(GET entry 2 ne)
+  list(GET entry 3 nf)
+  set(pcd "${WORK_DIR}/model_${model}.pcd")
+  set(json "${WORK_DIR}/model_${model}.json")
+  expect_success(generate_${model} "${GENERATE}" ${model} "${pcd}" -resolution 32
+                 -noise 0.2 -seed 5 -truth "${json}")
+  expect_header("${pcd}" "${generated_fields}" ">0")
+  if(NOT generate_${model}_out MATCHES "Truth: ${nv} vertices, ${ne} edges")
+    report_failure("generate_${model}: no 'Truth: ${nv} vertices, ${ne} edges' in\n"
+                   "${generate_${model}_out}")
+  endif()
+  if(NOT EXISTS "${json}")
+    report_failure("${json} was not written")
+  else()
+    file(READ "${json}" truth)
+    if(NOT truth MATCHES "\"counts\": {\"vertices\": ${nv}, \"edges\": ${ne},"
+       OR NOT truth MATCHES "\"faces\": ${nf}}")
+      report_failure("${json}: counts are not ${nv}/${ne}/${nf}")
+    else()
+      message(STATUS "ok: ${json}: ${nv} vertices, ${ne} edges, ${nf} faces")
+    endif()
+  endif()
+endforeach()
 
 # --- 2. PLY input, existing label field ------------------------------------------
 # 150 points on the faces of the cube [0,4]^3 (5x5 per face).
@@ -219,6 +256,15 @@ expect_failure(generate_unknown_shape "${WORK_DIR}/gen_bad.pcd" "${GENERATE}" do
                "${WORK_DIR}/gen_bad.pcd")
 expect_failure(generate_bad_spacing "${WORK_DIR}/gen_bad.pcd" "${GENERATE}" cube
                "${WORK_DIR}/gen_bad.pcd" -spacing -1)
+expect_failure(generate_truth_not_json "${WORK_DIR}/gen_bad.pcd" "${GENERATE}" cube
+               "${WORK_DIR}/gen_bad.pcd" -truth "${WORK_DIR}/gen_bad.txt")
+expect_failure(generate_truth_dir_missing "${WORK_DIR}/gen_bad.pcd" "${GENERATE}" cube
+               "${WORK_DIR}/gen_bad.pcd" -truth "${WORK_DIR}/no/such/dir/t.json")
+expect_failure(generate_truth_no_value "${WORK_DIR}/gen_bad.pcd" "${GENERATE}" cube
+               "${WORK_DIR}/gen_bad.pcd" -truth)
+if(EXISTS "${WORK_DIR}/gen_bad.txt")
+  report_failure("generate_truth_not_json: left gen_bad.txt behind")
+endif()
 
 file(GLOB leftovers "${WORK_DIR}/*.tmp")
 if(leftovers)

@@ -4,6 +4,7 @@
 
 #include "tool_utils.h"
 
+#include <fstream>
 #include <visfeat/error.h>
 #include <visfeat/grid_spec.h>
 #include <visfeat/memory_budget.h>
@@ -33,7 +34,9 @@ namespace {
 const char* const kProgram = "visfeat";
 
 constexpr int kDefaultResolution = 256;
-constexpr int kDefaultMaxRadius = 11;
+constexpr int kDefaultMinRadius = 16;
+constexpr int kDefaultVertexCells = 25;
+constexpr double kDefaultDimensionality = 3.5;
 constexpr double kDefaultOpacity = 0.0;
 constexpr int kDefaultThreads = 0;
 
@@ -47,17 +50,33 @@ printHelp(const char* program)
     "  \"Visibility-Based Feature Extraction From Discrete Models\"). The output "
     "holds\n"
     "  every field of the input plus visibility_radius (float), label (uint32) and\n"
-    "  feature_class (uint8); an existing field of one of these names is overwritten.\n"
-    "  label and feature_class are 0 in this version.\n");
+    "  feature_class (uint8: 0 none, 1 vertex, 2 edge, 3 face); an existing field of\n"
+    "  one of these names is overwritten. label is the region id (0 = none).\n");
   print_info("  where options are:\n");
   print_info("    -resolution N     = cells along the longest side of the "
              "bounding box (default: ");
   print_value("%d", kDefaultResolution);
   print_info(" cells; %d-%d)\n", visfeat::GridSpec::kMinResolution,
              visfeat::GridSpec::kMaxResolution);
+  print_info(
+    "    -min_radius R     = cells with radius >= R form components (default: ");
+  print_value("%d", kDefaultMinRadius);
+  print_info(" rings; the paper used 11)\n");
   print_info("    -max_radius R     = cap of the visibility radius (default: ");
-  print_value("%d", kDefaultMaxRadius);
-  print_info(" rings; 1-%d)\n", visfeat::VisibilityMap::kMaxRadius);
+  print_value("min_radius");
+  print_info("; %d-%d rings, >= min_radius)\n", 1, visfeat::VisibilityMap::kMaxRadius);
+  print_info("    -vertex_cells N   = components of <= N cells are vertex candidates "
+             "(default: ");
+  print_value("%d", kDefaultVertexCells);
+  print_info(" cells)\n");
+  print_info("    -dimensionality D = raw mode: edge if mean same-component "
+             "6-neighbours < D (default: ");
+  print_value("%g", kDefaultDimensionality);
+  print_info(")\n");
+  print_info("    -raw              = the paper's literal components (no regions, no "
+             "clean-up)\n");
+  print_info("    -no_regions       = label the components' cores only, not every "
+             "point\n");
   print_info("    -opacity D        = blocked length tolerated between two "
              "cells (default: ");
   print_value("%g", kDefaultOpacity);
@@ -74,6 +93,9 @@ printHelp(const char* program)
   print_info(" = 3/4 of physical memory, MiB)\n");
   print_info("    -voxels cells.pcd = also write one point per band cell "
              "(cell centre, i j k, visibility_radius, label, feature_class)\n");
+  print_info(
+    "    -graph g.{dot,json} = also write the topology graph: GraphViz DOT, or JSON "
+    "with the grid and every parameter\n");
   print_info("    -q                = quiet: errors only\n");
   print_info("  Outputs are written to a temporary file and renamed when complete.\n");
 }
@@ -147,12 +169,18 @@ private:
 struct Options
 {
   int resolution = kDefaultResolution;
-  int max_radius = kDefaultMaxRadius;
+  int min_radius = kDefaultMinRadius;
+  int max_radius = 0; // 0 = min_radius
+  int vertex_cells = kDefaultVertexCells;
+  double dimensionality = kDefaultDimensionality;
+  bool raw = false;
+  bool regions = true;
   double opacity = kDefaultOpacity;
   int threads = kDefaultThreads;
   bool repair = true;
   long long memory_limit_mb = 0;
   std::string voxels;
+  std::string graph;
   bool quiet = false;
 };
 
@@ -187,7 +215,9 @@ writeTemporary(const std::string& path,
 
 /** \brief The -voxels cloud: one PointVoxel per band cell, at the cell centre. */
 pcl::PointCloud<visfeat::PointVoxel>
-voxelCloud(const visfeat::VoxelBand& band, const visfeat::VisibilityMap& map)
+voxelCloud(const visfeat::VoxelBand& band,
+           const visfeat::VisibilityMap& map,
+           const visfeat::FeatureSegmentation& segmentation)
 {
   pcl::PointCloud<visfeat::PointVoxel> cells;
   cells.resize(band.size());
@@ -205,8 +235,11 @@ voxelCloud(const visfeat::VoxelBand& band, const visfeat::VisibilityMap& map)
     v.visibility_radius =
       have_radii ? static_cast<float>(map.radius(static_cast<visfeat::CellId>(id)))
                  : 0.f;
-    v.label = 0;
-    v.feature_class = 0;
+    const bool labeled = segmentation.cellLabels().size() == band.size();
+    v.label = labeled ? segmentation.cellLabels()[id] : 0u;
+    v.feature_class = static_cast<std::uint8_t>(
+      labeled ? segmentation.cellClass(static_cast<visfeat::CellId>(id))
+              : visfeat::FeatureClass::kNone);
   }
   cells.width = static_cast<std::uint32_t>(cells.size());
   cells.height = 1;
@@ -243,9 +276,10 @@ int
 run(int argc, char** argv)
 {
   const vt::Arguments args(argc, argv,
-                           {"-resolution", "-max_radius", "-opacity", "-threads",
-                            "-memory_limit_mb", "-voxels"},
-                           {"-no_repair", "-q", "-h", "--help"});
+                           {"-resolution", "-max_radius", "-min_radius",
+                            "-vertex_cells", "-dimensionality", "-opacity", "-threads",
+                            "-memory_limit_mb", "-voxels", "-graph"},
+                           {"-no_repair", "-raw", "-no_regions", "-q", "-h", "--help"});
   if (!args.ok())
     return fail(args.error());
 
@@ -273,6 +307,10 @@ run(int argc, char** argv)
                        visfeat::GridSpec::kMaxResolution, opt.resolution, error) ||
       !args.getInteger("-max_radius", 1, visfeat::VisibilityMap::kMaxRadius,
                        opt.max_radius, error) ||
+      !args.getInteger("-min_radius", 1, visfeat::VisibilityMap::kMaxRadius,
+                       opt.min_radius, error) ||
+      !args.getInteger("-vertex_cells", 0, 100000, opt.vertex_cells, error) ||
+      !args.getReal("-dimensionality", 0.0, 6.0, opt.dimensionality, error) ||
       !args.getReal("-opacity", 0.0, visfeat::VisibilityMap::kMaxOpacity, opt.opacity,
                     error) ||
       !args.getInteger("-threads", 0, visfeat::VisibilityMap::kMaxThreads, opt.threads,
@@ -280,6 +318,14 @@ run(int argc, char** argv)
       !args.getInteger("-memory_limit_mb", 0, 1LL << 40, opt.memory_limit_mb, error))
     return fail(error);
   opt.repair = !args.has("-no_repair");
+  opt.raw = args.has("-raw");
+  opt.regions = !args.has("-no_regions");
+  if (opt.max_radius == 0)
+    opt.max_radius = opt.min_radius;
+  if (opt.min_radius > opt.max_radius)
+    return fail("-min_radius " + std::to_string(opt.min_radius) +
+                " exceeds -max_radius " + std::to_string(opt.max_radius) +
+                ": components need radii up to min_radius");
   opt.voxels = args.value("-voxels");
   if (args.has("-voxels") && opt.voxels.empty())
     return fail("-voxels needs a file name");
@@ -296,6 +342,19 @@ run(int argc, char** argv)
   }
   if (!opt.voxels.empty() && opt.voxels == output)
     return fail("the -voxels file must differ from the output file");
+  opt.graph = args.value("-graph");
+  if (args.has("-graph")) {
+    const std::string ext = vt::lowerExtension(opt.graph);
+    if (opt.graph.empty())
+      return fail("-graph needs a file name");
+    if (ext != ".dot" && ext != ".gv" && ext != ".json")
+      return fail("graph output '" + opt.graph +
+                  "' must have the extension .dot, .gv or .json");
+    if (!vt::checkWritable(opt.graph, error))
+      return fail(error);
+    if (opt.graph == output || opt.graph == opt.voxels)
+      return fail("the -graph file must differ from the other outputs");
+  }
 
   // Load.
   TicToc tt;
@@ -331,6 +390,11 @@ run(int argc, char** argv)
   estimator.setInputCloud(xyz);
   estimator.setResolution(opt.resolution);
   estimator.setMaxRadius(opt.max_radius);
+  estimator.setMinRadius(opt.min_radius);
+  estimator.setVertexMaxCells(opt.vertex_cells);
+  estimator.setDimensionality(opt.dimensionality);
+  estimator.setRawMode(opt.raw);
+  estimator.setCompleteRegions(opt.regions);
   estimator.setOpacity(opt.opacity);
   estimator.setNumberOfThreads(static_cast<unsigned int>(opt.threads));
   estimator.setBandRepair(opt.repair);
@@ -409,12 +473,22 @@ run(int argc, char** argv)
   print_value("%.1f", times.free_space_ms);
   print_info(" ms, visibility ");
   print_value("%.1f", times.visibility_ms);
+  print_info(" ms, segmentation ");
+  print_value("%.1f", times.segmentation_ms);
   print_info(" ms, output ");
   print_value("%.1f", times.output_ms);
   print_info(" ms; total ");
   print_value("%.1f", times.total());
   print_info(" ms\n");
   printHistogram(estimator.getVisibilityMap(), opt.max_radius);
+  const auto counts = estimator.getSegmentation().classCounts();
+  print_info("Regions%s: ", opt.raw ? " (raw components)" : "");
+  print_value("%zu", counts[1]);
+  print_info(" vertices, ");
+  print_value("%zu", counts[2]);
+  print_info(" edges, ");
+  print_value("%zu", counts[3]);
+  print_info(" faces\n");
 
   // Output: the input's fields (those named like ours removed) + the three new fields.
   if (result.size() != static_cast<std::size_t>(cloud.width) * cloud.height)
@@ -458,7 +532,7 @@ run(int argc, char** argv)
     print_highlight("Saving ");
     print_value("%s ", opt.voxels.c_str());
     const pcl::PointCloud<visfeat::PointVoxel> cells =
-      voxelCloud(band, estimator.getVisibilityMap());
+      voxelCloud(band, estimator.getVisibilityMap(), estimator.getSegmentation());
     pcl::PCLPointCloud2 cells2;
     pcl::toPCLPointCloud2(cells, cells2);
     if (!writeTemporary(opt.voxels, cells2, Eigen::Vector4f::Zero(),
@@ -473,13 +547,60 @@ run(int argc, char** argv)
     print_value("%zu", cells.size());
     print_info(" cells]\n");
   }
-  if (!vt::commitOutput(output, error)) {
-    if (!opt.voxels.empty())
-      vt::discardOutput(opt.voxels);
-    return fail(error);
+  if (!opt.graph.empty()) {
+    const visfeat::TopologyGraph& graph = estimator.getTopologyGraph();
+    print_highlight("Saving ");
+    print_value("%s ", opt.graph.c_str());
+    visfeat::GraphMetadata meta;
+    meta.grid = grid;
+    meta.source = input;
+    const auto& sp = estimator.getSegmentationParameters();
+    meta.parameters = {
+      {"resolution", std::to_string(opt.resolution)},
+      {"min_radius", std::to_string(sp.components.min_radius)},
+      {"max_radius", std::to_string(opt.max_radius)},
+      {"vertex_max_cells", std::to_string(sp.components.vertex_max_cells)},
+      {"dimensionality", std::to_string(sp.components.dimensionality)},
+      {"face_min_depth", std::to_string(sp.components.face_min_depth)},
+      {"vertex_reach", std::to_string(sp.vertex_reach)},
+      {"feature_width", std::to_string(sp.feature_width)},
+      {"min_piece_cells", std::to_string(sp.min_piece_cells)},
+      {"raw", sp.raw ? "true" : "false"},
+      {"complete_regions", sp.complete_regions ? "true" : "false"},
+      {"opacity", std::to_string(opt.opacity)},
+      {"repair", opt.repair ? "true" : "false"},
+      {"graph_dilation", std::to_string(graph.parameters().dilation_radius)}};
+    std::ofstream file(vt::temporaryPath(opt.graph));
+    const std::string ext = vt::lowerExtension(opt.graph);
+    if (ext == ".json")
+      graph.writeJson(file, meta);
+    else
+      graph.writeDot(file);
+    file.close();
+    if (!file) {
+      vt::discardOutput(opt.graph);
+      vt::discardOutput(output);
+      if (!opt.voxels.empty())
+        vt::discardOutput(opt.voxels);
+      return fail("cannot write '" + opt.graph + "'");
+    }
+    print_info("[");
+    print_value("%zu", graph.classCount(visfeat::FeatureClass::kVertex));
+    print_info(" vertices, ");
+    print_value("%zu", graph.classCount(visfeat::FeatureClass::kEdge));
+    print_info(" edges, ");
+    print_value("%zu", graph.classCount(visfeat::FeatureClass::kFace));
+    print_info(" faces, ");
+    print_value("%zu", graph.arcCount());
+    print_info(" arcs]\n");
   }
-  if (!opt.voxels.empty() && !vt::commitOutput(opt.voxels, error))
-    return fail(error);
+  for (const std::string& path : {output, opt.voxels, opt.graph})
+    if (!path.empty() && !vt::commitOutput(path, error)) {
+      for (const std::string& other : {output, opt.voxels, opt.graph})
+        if (!other.empty())
+          vt::discardOutput(other);
+      return fail(error);
+    }
   return 0;
 }
 

@@ -1,9 +1,10 @@
-// visfeat_benchmark: time VisibilityFeatureEstimation on synthetic shapes at several
-// resolutions, phase by phase, against PCL's NormalEstimationOMP (k = 30) on the same
-// cloud -- the target is to cost no more than normal estimation.
+// visfeat_benchmark: time VisibilityFeatureEstimation on synthetic CAD models at
+// several resolutions, phase by phase, against PCL's NormalEstimationOMP (k = 30) on
+// the same cloud -- the target is to cost no more than normal estimation.
 
 #include "tool_utils.h"
 
+#include <visfeat/cad_models.h>
 #include <visfeat/error.h>
 #include <visfeat/free_space.h>
 #include <visfeat/grid_spec.h>
@@ -40,7 +41,7 @@ namespace {
 
 const char* const kProgram = "visfeat_benchmark";
 
-constexpr int kDefaultMaxRadius = 11;
+constexpr int kDefaultMaxRadius = 16; // = the estimator's default min_radius
 constexpr double kDefaultOpacity = 0.0;
 constexpr double kSpacingCells = 0.5;
 constexpr int kBaselineK = 30;
@@ -50,15 +51,16 @@ printHelp(const char* program)
 {
   print_error("Syntax is: %s <options>\n", program);
   print_info(
-    "  Samples synthetic shapes (random rotation, %g-cell spacing) and times visfeat "
+    "  Samples synthetic CAD models (random rotation, %g-cell spacing) and times "
+    "visfeat "
     "on\n"
     "  them, phase by phase, next to pcl::NormalEstimationOMP (k = %d, kd-tree build\n"
     "  included) on the same cloud. Sampling is not timed.\n",
     kSpacingCells, kBaselineK);
   print_info("  where options are:\n");
-  print_info("    -shapes a,b,...     = shapes (default: ");
+  print_info("    -shapes a,b,...     = CAD models (default: ");
   std::string all;
-  for (const auto& name : visfeat::synthetic::shapeNames())
+  for (const auto& name : visfeat::synthetic::cadModelNames())
     all += (all.empty() ? "" : ",") + name;
   print_value("%s", all.c_str());
   print_info(")\n");
@@ -197,7 +199,7 @@ public:
       return;
     }
     std::printf(
-      "%-12s %5s %-8s %9s %9s %7s %7s %7s %7s %7s %7s %8s %8s %9s %8s %8s %6s\n",
+      "%-16s %5s %-8s %9s %9s %7s %7s %7s %7s %7s %7s %8s %8s %9s %8s %8s %6s\n",
       "shape", "res", "method", "points", "mixed", "repair", "grid_s", "band_s",
       "free_s", "vis_s", "out_s", "total_s", "Mcell/s", "tests(M)", "peak_MiB",
       "data_MiB", "ratio");
@@ -225,11 +227,11 @@ public:
       return;
     }
     if (!r.error.empty())
-      std::printf("%-12s %5d %-8s %9zu  FAILED: %s\n", r.shape.c_str(), r.resolution,
+      std::printf("%-16s %5d %-8s %9zu  FAILED: %s\n", r.shape.c_str(), r.resolution,
                   r.method.c_str(), r.points, r.error.c_str());
     else if (r.visfeat)
       std::printf(
-        "%-12s %5d %-8s %9zu %9zu %7zu %7.3f %7.3f %7.3f %7.3f %7.3f %8.3f %8.3f "
+        "%-16s %5d %-8s %9zu %9zu %7zu %7.3f %7.3f %7.3f %7.3f %7.3f %8.3f %8.3f "
         "%9.1f %8.1f %8.1f %6s\n",
         r.shape.c_str(), r.resolution, r.method.c_str(), r.points, r.mixed, r.repair,
         p.grid_ms / 1e3, p.band_ms / 1e3, p.free_space_ms / 1e3, p.visibility_ms / 1e3,
@@ -240,7 +242,7 @@ public:
       if (r.ratio > 0)
         std::snprintf(ratio, sizeof(ratio), "%.2f", r.ratio);
       std::printf(
-        "%-12s %5d %-8s %9zu %9s %7s %7s %7s %7s %7s %7s %8.3f %8s %9s %8.1f %8s %6s\n",
+        "%-16s %5d %-8s %9zu %9s %7s %7s %7s %7s %7s %7s %8.3f %8s %9s %8.1f %8s %6s\n",
         r.shape.c_str(), r.resolution, r.method.c_str(), r.points, "-", "-", "-", "-",
         "-", "-", "-", r.total_s, "-", "-", r.peak_mib, "-", ratio);
     }
@@ -290,6 +292,7 @@ runVisfeat(const Settings& s,
     estimator.setInputCloud(cloud);
     estimator.setResolution(resolution);
     estimator.setMaxRadius(s.max_radius);
+    estimator.setMinRadius(s.max_radius); // components up to the cap
     estimator.setOpacity(s.opacity);
     estimator.setNumberOfThreads(static_cast<unsigned int>(s.threads));
     pcl::PointCloud<visfeat::PointVisibility> out;
@@ -390,7 +393,7 @@ run(int argc, char** argv)
   s.baseline = !args.has("-no_baseline");
   s.csv = args.has("-csv");
 
-  const std::vector<std::string> known = visfeat::synthetic::shapeNames();
+  const std::vector<std::string> known = visfeat::synthetic::cadModelNames();
   if (args.has("-shapes")) {
     for (const std::string& name : vt::splitList(args.value("-shapes"))) {
       if (std::find(known.begin(), known.end(), name) == known.end()) {
@@ -442,14 +445,18 @@ run(int argc, char** argv)
   int status = 0;
   for (const std::string& shape : s.shapes) {
     const std::uint64_t seed = static_cast<std::uint64_t>(s.seed);
-    const visfeat::synthetic::TriangleMesh mesh = visfeat::synthetic::rotated(
-      visfeat::synthetic::shapeByName(shape), visfeat::synthetic::randomRotation(seed));
+    const visfeat::synthetic::CadModel model =
+      visfeat::synthetic::rotated(visfeat::synthetic::cadModelByName(shape),
+                                  visfeat::synthetic::randomRotation(seed));
     for (int resolution : s.resolutions) {
       auto cloud = std::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
       {
-        const std::vector<Eigen::Vector3f> samples = visfeat::synthetic::sampleSurface(
-          mesh, visfeat::synthetic::samplesForSpacing(mesh, resolution, kSpacingCells),
-          seed);
+        visfeat::synthetic::SamplingOptions options;
+        options.count =
+          visfeat::synthetic::samplesForSpacing(model, resolution, kSpacingCells);
+        options.seed = seed;
+        const std::vector<Eigen::Vector3f> samples =
+          visfeat::synthetic::sampleCadModel(model, options).points;
         cloud->resize(samples.size());
         for (std::size_t i = 0; i < samples.size(); ++i)
           (*cloud)[i].getVector3fMap() = samples[i];

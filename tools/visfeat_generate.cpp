@@ -1,8 +1,11 @@
-// visfeat_generate: a point cloud sampled from a synthetic shape (a Platonic solid
-// under a random rotation), for trying visfeat and for tests. Binary PCD of PointXYZ.
+// visfeat_generate: a point cloud sampled from a synthetic CAD model (a polyhedron, a
+// box with a hole, a cylinder) under a random rotation, with its ground truth: per
+// point the distance to the nearest true sharp curve and the face it was sampled from;
+// and, on request, the model's vertices, edges, faces and incidences as JSON.
 
 #include "tool_utils.h"
 
+#include <visfeat/cad_models.h>
 #include <visfeat/error.h>
 #include <visfeat/grid_spec.h>
 #include <visfeat/memory_budget.h>
@@ -12,14 +15,40 @@
 #include <pcl/console/print.h>
 #include <pcl/console/time.h>
 #include <pcl/io/pcd_io.h>
+#include <pcl/point_types.h>
+#include <pcl/register_point_struct.h>
 
 #include <cstdint>
+#include <filesystem>
+#include <fstream>
 #include <new>
-#include <random>
 #include <string>
+#include <system_error>
+
+namespace visfeat_tools {
+
+/** \brief A generated point: x y z, the distance of its noise-free position to the
+ * nearest true sharp curve (world units) and the id of the face it was sampled from. */
+struct EIGEN_ALIGN16 PointGenerated
+{
+  PCL_ADD_POINT4D;
+  float curve_distance;
+  std::uint32_t face_id;
+
+  PCL_MAKE_ALIGNED_OPERATOR_NEW
+};
+
+} // namespace visfeat_tools
+
+POINT_CLOUD_REGISTER_POINT_STRUCT(visfeat_tools::PointGenerated,
+                                  (float, x, x)(float, y, y)(float, z, z)(
+                                    float,
+                                    curve_distance,
+                                    curve_distance)(std::uint32_t, face_id, face_id))
 
 using namespace pcl::console;
 namespace vt = visfeat_tools;
+namespace syn = visfeat::synthetic;
 
 namespace {
 
@@ -32,10 +61,10 @@ constexpr double kDefaultNoise = 0.0;
 constexpr long long kMaxPoints = 2000000000LL;
 
 std::string
-shapeList()
+modelList()
 {
   std::string list;
-  for (const auto& name : visfeat::synthetic::shapeNames())
+  for (const auto& name : syn::cadModelNames())
     list += (list.empty() ? "" : ", ") + name;
   return list;
 }
@@ -43,12 +72,15 @@ shapeList()
 void
 printHelp(const char* program)
 {
-  print_error("Syntax is: %s <shape> output.pcd <options>\n", program);
+  print_error("Syntax is: %s <model> output.pcd <options>\n", program);
   print_info(
-    "  Samples points uniformly over the surface of a synthetic shape under a random\n"
-    "  rotation and writes them as binary PCD (PointXYZ).\n");
-  print_info("  where <shape> is one of: ");
-  print_value("%s\n", shapeList().c_str());
+    "  Samples points uniformly (by area) over the surface of a synthetic CAD model\n"
+    "  under a random rotation and writes them as binary PCD with the fields\n"
+    "  x y z curve_distance face_id: curve_distance = distance of the noise-free\n"
+    "  sample to the nearest true sharp curve (world units), face_id = the true face\n"
+    "  it was sampled from.\n");
+  print_info("  where <model> is one of: ");
+  print_value("%s\n", modelList().c_str());
   print_info("  and options are:\n");
   print_info("    -resolution N = grid the spacing and noise refer to: cells "
              "along the longest side (default: ");
@@ -64,9 +96,12 @@ printHelp(const char* program)
   print_info("    -noise SIGMA  = Gaussian noise per coordinate (default: ");
   print_value("%g", kDefaultNoise);
   print_info(" cells)\n");
+  print_info(
+    "    -truth F.json = also write the rotated model's truth: vertices, edges\n"
+    "                    (straight or circle), faces, incidences, counts\n");
   print_info("    -q            = quiet: errors only\n");
   print_info(
-    "  A cell is the longest bounding-box side of the rotated shape / resolution.\n");
+    "  A cell is the longest bounding-box side of the rotated model / resolution.\n");
 }
 
 int
@@ -76,21 +111,38 @@ fail(const std::string& message)
   return 1;
 }
 
+/** \brief Write the truth JSON to the temporary name of `path`. */
+bool
+writeTruth(const std::string& path, const syn::CadModel& model, std::string& error)
+{
+  {
+    std::ofstream out(vt::temporaryPath(path), std::ios::binary | std::ios::trunc);
+    out << syn::cadModelJson(model);
+    out.flush();
+    if (out)
+      return true;
+  }
+  vt::discardOutput(path);
+  error = "cannot write '" + path + "' (disk full or not writable?)";
+  return false;
+}
+
 int
 run(int argc, char** argv)
 {
-  const vt::Arguments args(argc, argv,
-                           {"-resolution", "-spacing", "-points", "-seed", "-noise"},
-                           {"-q", "-h", "--help"});
+  const vt::Arguments args(
+    argc, argv, {"-resolution", "-spacing", "-points", "-seed", "-noise", "-truth"},
+    {"-q", "-h", "--help"});
   if (!args.ok())
     return fail(args.error());
   if (args.has("-q"))
     vt::beQuiet();
   if (args.positional().size() != 2)
-    return fail("expected a shape and an output .pcd, got " +
+    return fail("expected a model and an output .pcd, got " +
                 std::to_string(args.positional().size()) + " argument(s) (see -h)");
-  const std::string shape = args.positional()[0];
+  const std::string name = args.positional()[0];
   const std::string output = args.positional()[1];
+  const std::string truth = args.value("-truth");
 
   int resolution = kDefaultResolution;
   double spacing = kDefaultSpacing;
@@ -108,49 +160,65 @@ run(int argc, char** argv)
     return fail(error);
   if (args.has("-points") && args.has("-spacing"))
     print_warn("-points given: -spacing is ignored\n");
+  if (args.has("-truth") && truth.empty())
+    return fail("-truth expects a file name");
 
   bool known = false;
-  for (const auto& name : visfeat::synthetic::shapeNames())
-    known = known || name == shape;
+  for (const auto& n : syn::cadModelNames())
+    known = known || n == name;
   if (!known)
-    return fail("unknown shape '" + shape + "' (known: " + shapeList() + ")");
+    return fail("unknown model '" + name + "' (known: " + modelList() + ")");
   if (vt::lowerExtension(output) != ".pcd")
     return fail("output '" + output + "' must have the extension .pcd");
   if (!vt::checkWritable(output, error))
     return fail(error);
+  if (!truth.empty()) {
+    if (vt::lowerExtension(truth) != ".json")
+      return fail("truth output '" + truth + "' must have the extension .json");
+    if (truth == output)
+      return fail("the truth and the cloud cannot be the same file");
+    if (!vt::checkWritable(truth, error))
+      return fail(error);
+  }
 
   TicToc tt;
   tt.tic();
   print_highlight("Generating ");
-  print_value("%s ", shape.c_str());
+  print_value("%s ", name.c_str());
   const std::uint64_t seed64 = static_cast<std::uint64_t>(seed);
-  const visfeat::synthetic::TriangleMesh mesh = visfeat::synthetic::rotated(
-    visfeat::synthetic::shapeByName(shape), visfeat::synthetic::randomRotation(seed64));
-  const double cell = mesh.bounds().sizes().maxCoeff() / resolution;
-  const std::size_t count =
-    points > 0 ? static_cast<std::size_t>(points)
-               : visfeat::synthetic::samplesForSpacing(mesh, resolution, spacing);
+  const syn::CadModel model =
+    syn::rotated(syn::cadModelByName(name), syn::randomRotation(seed64));
+  const double cell = syn::cellSize(model, resolution);
+  const std::size_t count = points > 0
+                              ? static_cast<std::size_t>(points)
+                              : syn::samplesForSpacing(model, resolution, spacing);
   if (count == 0)
     return fail("no points to generate (spacing too large?)");
-  // The samples, the cloud and PCL's write buffer.
+  if (count > static_cast<std::size_t>(kMaxPoints))
+    return fail(std::to_string(count) +
+                " points: too many (spacing too small?); the limit is " +
+                std::to_string(kMaxPoints));
+  // The samples with their truth, the cloud and PCL's write buffer.
   visfeat::checkMemory(static_cast<std::uint64_t>(count) *
-                         (sizeof(Eigen::Vector3f) + sizeof(pcl::PointXYZ) + 12),
+                         (sizeof(Eigen::Vector3f) + sizeof(int) + sizeof(double) +
+                          sizeof(vt::PointGenerated) + 20),
                        0, std::to_string(count) + " points");
-  const std::vector<Eigen::Vector3f> samples =
-    visfeat::synthetic::sampleSurface(mesh, count, seed64);
+  syn::SamplingOptions options;
+  options.count = count;
+  options.seed = seed64;
+  options.noise_sigma = noise * cell;
+  const syn::CadSamples samples = syn::sampleCadModel(model, options);
 
-  pcl::PointCloud<pcl::PointXYZ> cloud;
-  cloud.resize(samples.size());
-  std::mt19937_64 rng(seed64 ^
-                      0x9E3779B97F4A7C15ull); // a stream apart from the sampling
-  std::normal_distribution<double> gauss(0.0, noise * cell);
-  for (std::size_t i = 0; i < samples.size(); ++i) {
-    Eigen::Vector3d p = samples[i].cast<double>();
-    if (noise > 0.0)
-      p += Eigen::Vector3d(gauss(rng), gauss(rng), gauss(rng));
-    cloud[i].x = static_cast<float>(p.x());
-    cloud[i].y = static_cast<float>(p.y());
-    cloud[i].z = static_cast<float>(p.z());
+  pcl::PointCloud<vt::PointGenerated> cloud;
+  cloud.resize(samples.points.size());
+  for (std::size_t i = 0; i < samples.points.size(); ++i) {
+    vt::PointGenerated& p = cloud[i];
+    p.x = samples.points[i].x();
+    p.y = samples.points[i].y();
+    p.z = samples.points[i].z();
+    p.data[3] = 1.0f;
+    p.curve_distance = static_cast<float>(samples.curve_distance[i]);
+    p.face_id = static_cast<std::uint32_t>(samples.face[i]);
   }
   cloud.width = static_cast<std::uint32_t>(cloud.size());
   cloud.height = 1;
@@ -176,9 +244,30 @@ run(int argc, char** argv)
   print_value("%lld", seed);
   print_info("]\n");
 
+  std::size_t circles = 0;
+  for (const auto& c : model.curves)
+    circles += c.kind == syn::CadCurve::Kind::kCircle ? 1 : 0;
+  print_info("Truth: ");
+  print_value("%zu", model.vertices.size());
+  print_info(" vertices, ");
+  print_value("%zu", model.curves.size());
+  print_info(" edges (");
+  print_value("%zu", model.curves.size() - circles);
+  print_info(" straight, ");
+  print_value("%zu", circles);
+  print_info(" circular), ");
+  print_value("%zu", model.faces.size());
+  print_info(" faces; Euler characteristic ");
+  print_value("%d", syn::eulerCharacteristic(model));
+  print_info("\n");
+
+  // Both files are written under temporary names and renamed only when both are
+  // complete, so a failure leaves neither.
   tt.tic();
   print_highlight("Saving ");
   print_value("%s ", output.c_str());
+  if (!truth.empty())
+    print_value("%s ", truth.c_str());
   pcl::PCDWriter writer;
   const int rc =
     vt::quietly([&] { return writer.writeBinary(vt::temporaryPath(output), cloud); });
@@ -187,8 +276,21 @@ run(int argc, char** argv)
     print_info("\n");
     return fail("cannot write '" + output + "' (disk full or not writable?)");
   }
-  if (!vt::commitOutput(output, error))
+  if (!truth.empty() && !writeTruth(truth, model, error)) {
+    vt::discardOutput(output);
+    print_info("\n");
     return fail(error);
+  }
+  if (!vt::commitOutput(output, error)) {
+    if (!truth.empty())
+      vt::discardOutput(truth);
+    return fail(error);
+  }
+  if (!truth.empty() && !vt::commitOutput(truth, error)) {
+    std::error_code ec;
+    std::filesystem::remove(output, ec);
+    return fail(error);
+  }
   print_info("[done, ");
   print_value("%g", tt.toc());
   print_info(" ms]\n");

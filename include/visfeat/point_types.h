@@ -1,20 +1,13 @@
 #pragma once
 
+#include <visfeat/feature_class.h>
+
 #include <pcl/point_types.h>
 #include <pcl/register_point_struct.h>
 
 #include <cstdint>
 
 namespace visfeat {
-
-/** \brief What a point or a cell is part of; stored in the feature_class field. */
-enum class FeatureClass : std::uint8_t
-{
-  kNone = 0,
-  kVertex = 1,
-  kEdge = 2,
-  kFace = 3,
-};
 
 /** \brief Per-point output of VisibilityFeatureEstimation.
  *

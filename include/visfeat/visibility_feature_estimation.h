@@ -1,7 +1,9 @@
 #pragma once
 
+#include <visfeat/feature_segmentation.h>
 #include <visfeat/free_space.h>
 #include <visfeat/point_types.h>
+#include <visfeat/topology_graph.h>
 #include <visfeat/visibility_map.h>
 #include <visfeat/voxel_band.h>
 
@@ -16,15 +18,18 @@ namespace visfeat {
 /** \brief Wall-clock milliseconds of each phase of the last compute(). */
 struct PhaseTimes
 {
-  double grid_ms = 0.0;       // bounding box and grid
-  double band_ms = 0.0;       // octree, mixed cells, repair, adjacency
-  double free_space_ms = 0.0; // 2x2x2 subcell mask
-  double visibility_ms = 0.0; // visibility map
-  double output_ms = 0.0;     // per-point fields
+  double grid_ms = 0.0;         // bounding box and grid
+  double band_ms = 0.0;         // octree, mixed cells, repair, adjacency
+  double free_space_ms = 0.0;   // 2x2x2 subcell mask
+  double visibility_ms = 0.0;   // visibility map
+  double segmentation_ms = 0.0; // components, regions, vertex/edge/face classes
+  double output_ms = 0.0;       // per-point fields
+  double graph_ms = 0.0;        // topology graph
 
   double total() const
   {
-    return grid_ms + band_ms + free_space_ms + visibility_ms + output_ms;
+    return grid_ms + band_ms + free_space_ms + visibility_ms + segmentation_ms +
+           output_ms + graph_ms;
   }
 };
 
@@ -67,6 +72,7 @@ public:
     // Voxel-based: no neighbourhood search; these keep Feature's checks satisfied.
     k_ = 1;
     search_radius_ = 0.0;
+    visibility_.max_radius = segmentation_parameters_.components.min_radius;
   }
 
   /** \brief Cells along the longest side of the bounding box (default 256).
@@ -75,9 +81,67 @@ public:
   inline void setResolution(int resolution) { resolution_ = resolution; }
   inline int getResolution() const { return resolution_; }
 
-  /** \brief Cap of the visibility radius in rings (default 11, range 1-64). */
+  /** \brief Cap of the visibility radius in rings (default 16 = min_radius, range
+   * 1-64). Must be at least min_radius; higher values only cost time. */
   inline void setMaxRadius(int max_radius) { visibility_.max_radius = max_radius; }
   inline int getMaxRadius() const { return visibility_.max_radius; }
+
+  /** \brief Cells with radius >= min_radius form components (default 16 rings; the
+   * paper used 11, see ComponentParameters::min_radius). */
+  inline void setMinRadius(int min_radius)
+  {
+    segmentation_parameters_.components.min_radius = min_radius;
+  }
+  inline int getMinRadius() const
+  {
+    return segmentation_parameters_.components.min_radius;
+  }
+
+  /** \brief Components of at most this many cells are vertex candidates (default 25).
+   */
+  inline void setVertexMaxCells(int cells)
+  {
+    segmentation_parameters_.components.vertex_max_cells = cells;
+  }
+  inline int getVertexMaxCells() const
+  {
+    return segmentation_parameters_.components.vertex_max_cells;
+  }
+
+  /** \brief Raw mode's edge/face threshold on mean same-component 6-neighbours
+   * (default 3.5, the paper's). */
+  inline void setDimensionality(double dimensionality)
+  {
+    segmentation_parameters_.components.dimensionality = dimensionality;
+  }
+  inline double getDimensionality() const
+  {
+    return segmentation_parameters_.components.dimensionality;
+  }
+
+  /** \brief The paper's literal section 5 (default false); see FeatureSegmentation. */
+  inline void setRawMode(bool raw) { segmentation_parameters_.raw = raw; }
+  inline bool getRawMode() const { return segmentation_parameters_.raw; }
+
+  /** \brief Grow components into regions covering every point (default true). */
+  inline void setCompleteRegions(bool complete)
+  {
+    segmentation_parameters_.complete_regions = complete;
+  }
+  inline bool getCompleteRegions() const
+  {
+    return segmentation_parameters_.complete_regions;
+  }
+
+  /** \brief All segmentation parameters at once (see SegmentationParameters). */
+  inline void setSegmentationParameters(const SegmentationParameters& parameters)
+  {
+    segmentation_parameters_ = parameters;
+  }
+  inline const SegmentationParameters& getSegmentationParameters() const
+  {
+    return segmentation_parameters_;
+  }
 
   /** \brief Opacity in cell edges (default 0 = exact visibility; 3 for noisy scans). */
   inline void setOpacity(double opacity) { visibility_.opacity = opacity; }
@@ -114,6 +178,18 @@ public:
   inline const VoxelBand& getVoxelBand() const { return band_; }
   inline const FreeSpace& getFreeSpace() const { return free_space_; }
   inline const VisibilityMap& getVisibilityMap() const { return map_; }
+  /** \brief Dilation radius of the topology graph's arcs in cells (default -1 = auto:
+   * 2 with complete regions, which touch; min_radius otherwise, to cross the valleys
+   * between raw components). See TopologyGraphParameters. */
+  inline void setGraphDilation(int cells) { graph_dilation_ = cells; }
+  inline int getGraphDilation() const { return graph_dilation_; }
+
+  /** \brief The topology graph of the last compute(): nodes are regions (with the
+   * centroid and bounds of their points), arcs vertex-edge, edge-face, vertex-face. */
+  inline const TopologyGraph& getTopologyGraph() const { return graph_; }
+
+  /** \brief Vertex, edge and face regions of the last compute(). */
+  inline const FeatureSegmentation& getSegmentation() const { return segmentation_; }
   inline const PhaseTimes& getPhaseTimes() const { return times_; }
 
   /** \brief Why the last compute() produced an empty output ("" after success). */
@@ -135,11 +211,14 @@ protected:
   void computeFeature(PointCloudOut& output) override;
 
 private:
+  void buildGraph(const PointCloudOut& output);
+
   bool fail(const std::string& message);
 
   int resolution_ = 256;
   VoxelBand::Options band_options_;
   VisibilityMap::Parameters visibility_;
+  SegmentationParameters segmentation_parameters_;
   std::uint64_t memory_limit_ = 0;
   ProgressCallback progress_;
 
@@ -147,6 +226,9 @@ private:
   VoxelBand band_;
   FreeSpace free_space_;
   VisibilityMap map_;
+  FeatureSegmentation segmentation_;
+  int graph_dilation_ = -1;
+  TopologyGraph graph_;
   PhaseTimes times_;
   std::string error_;
 };

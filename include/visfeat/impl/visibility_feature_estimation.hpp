@@ -57,6 +57,7 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::initCompute()
   try {
     const auto start = std::chrono::steady_clock::now();
     VisibilityMap::validate(visibility_);
+    FeatureSegmentation::validate(segmentation_parameters_, visibility_.max_radius);
     grid_ = gridForCloud(*surface_, resolution_);
     // Refuse before allocating: the subcell mask dominates; cells are at most the
     // points.
@@ -83,6 +84,52 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::initCompute()
 
 template <typename PointInT, typename PointOutT>
 void
+VisibilityFeatureEstimation<PointInT, PointOutT>::buildGraph(
+  const PointCloudOut& output)
+{
+  const std::vector<Region>& regions = segmentation_.regions();
+  std::vector<FeatureClass> classes(regions.size());
+  for (std::size_t r = 0; r < regions.size(); ++r)
+    classes[r] = regions[r].feature_class;
+  TopologyGraphParameters parameters;
+  const bool touching =
+    !segmentation_parameters_.raw && segmentation_parameters_.complete_regions;
+  parameters.dilation_radius =
+    graph_dilation_ >= 0
+      ? graph_dilation_
+      : (touching ? 2 : segmentation_parameters_.components.min_radius);
+  graph_ = TopologyGraph::build(band_, segmentation_.cellLabels(), classes, parameters);
+
+  // Node geometry from the labeled output points themselves.
+  struct Sum
+  {
+    std::uint64_t n = 0;
+    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+    Eigen::Vector3d min =
+      Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
+    Eigen::Vector3d max =
+      -Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
+  };
+  std::vector<Sum> sums(regions.size());
+  for (const PointOutT& p : output.points) {
+    if (p.label == 0 || p.label > regions.size() || !pcl::isXYZFinite(p))
+      continue;
+    Sum& s = sums[p.label - 1];
+    const Eigen::Vector3d v(p.x, p.y, p.z);
+    ++s.n;
+    s.sum += v;
+    s.min = s.min.cwiseMin(v);
+    s.max = s.max.cwiseMax(v);
+  }
+  for (std::size_t r = 0; r < regions.size(); ++r)
+    if (sums[r].n > 0)
+      graph_.setPointGeometry(static_cast<std::uint32_t>(r + 1), sums[r].n,
+                              sums[r].sum / static_cast<double>(sums[r].n), sums[r].min,
+                              sums[r].max);
+}
+
+template <typename PointInT, typename PointOutT>
+void
 VisibilityFeatureEstimation<PointInT, PointOutT>::computeFeature(PointCloudOut& output)
 {
   using Clock = std::chrono::steady_clock;
@@ -98,6 +145,10 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::computeFeature(PointCloudOut& 
     start = Clock::now();
     map_ = VisibilityMap::compute(band_, free_space_, visibility_, progress_);
     times_.visibility_ms = detail::millisecondsSince(start);
+
+    start = Clock::now();
+    segmentation_ = FeatureSegmentation::compute(band_, map_, segmentation_parameters_);
+    times_.segmentation_ms = detail::millisecondsSince(start);
 
     start = Clock::now();
     const float nan = std::numeric_limits<float>::quiet_NaN();
@@ -124,15 +175,22 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::computeFeature(PointCloudOut& 
       out.x = p.x;
       out.y = p.y;
       out.z = p.z;
-      out.label = 0;
-      out.feature_class = static_cast<std::uint8_t>(FeatureClass::kNone);
       const CellId cell = pcl::isXYZFinite(p) ? cellOf(index, p) : kNoCell;
       out.visibility_radius =
         cell == kNoCell ? nan : static_cast<float>(map_.radius(cell));
+      out.label = cell == kNoCell
+                    ? 0u
+                    : segmentation_.cellLabels()[static_cast<std::size_t>(cell)];
+      out.feature_class = static_cast<std::uint8_t>(
+        cell == kNoCell ? FeatureClass::kNone : segmentation_.cellClass(cell));
       dense = dense && cell != kNoCell;
     }
     output.is_dense = dense;
     times_.output_ms = detail::millisecondsSince(start);
+
+    start = Clock::now();
+    buildGraph(output);
+    times_.graph_ms = detail::millisecondsSince(start);
   } catch (const Error& e) {
     fail(e.what());
     output.width = output.height = 0;

@@ -1,0 +1,459 @@
+#include <visfeat/error.h>
+#include <visfeat/feature_segmentation.h>
+#include <visfeat/region_growing.h>
+
+#include <algorithm>
+#include <functional>
+#include <iterator>
+#include <limits>
+#include <queue>
+#include <map>
+#include <numeric>
+#include <set>
+#include <sstream>
+
+namespace visfeat {
+namespace {
+
+/** Union-find over labels 1..n (0 unused). */
+class LabelUnion
+{
+public:
+  explicit LabelUnion(std::size_t labels)
+      : parent_(labels + 1)
+  {
+    std::iota(parent_.begin(), parent_.end(), std::uint32_t{0});
+  }
+
+  std::uint32_t find(std::uint32_t a)
+  {
+    while (parent_[a] != a)
+      a = parent_[a] = parent_[parent_[a]];
+    return a;
+  }
+
+  /** Joins b's set into a's; the smaller root survives, so results do not depend on
+   * the order of calls. */
+  void join(std::uint32_t a, std::uint32_t b)
+  {
+    a = find(a);
+    b = find(b);
+    if (a != b)
+      parent_[std::max(a, b)] = std::min(a, b);
+  }
+
+  /** Puts b's set under a's root (a merge into a, which keeps its class). */
+  void attach(std::uint32_t a, std::uint32_t b)
+  {
+    a = find(a);
+    b = find(b);
+    if (a != b)
+      parent_[b] = a;
+  }
+
+private:
+  std::vector<std::uint32_t> parent_;
+};
+
+using Contacts = std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t>;
+
+/** Shared boundary (6-adjacent cell pairs) between the sets of the union, both ways. */
+Contacts
+contactsOf(const VoxelBand& band,
+           const std::vector<std::uint32_t>& labels,
+           LabelUnion& sets)
+{
+  Contacts contacts;
+  for (std::size_t c = 0; c < labels.size(); ++c) {
+    if (labels[c] == 0)
+      continue;
+    const std::uint32_t a = sets.find(labels[c]);
+    for (const CellId nb : band.neighbours(static_cast<CellId>(c))) {
+      if (nb == kNoCell || labels[static_cast<std::size_t>(nb)] == 0)
+        continue;
+      const std::uint32_t b = sets.find(labels[static_cast<std::size_t>(nb)]);
+      if (a != b)
+        ++contacts[{a, b}];
+    }
+  }
+  return contacts;
+}
+
+/** Edge and vertex regions end where the watershed met the faces, in the valleys 3-4
+  * cells out. Keep only their skeleton (core cells, plus a ridge-following path from
+  * each vertex core to the cores of the edges it touches, so edges reach their
+  * vertices) widened by `width` cells; the rest goes to the nearest face region. */
+void
+thinFeatureRegions(const VoxelBand& band,
+                   const VisibilityMap& map,
+                   const std::vector<std::uint32_t>& core_labels,
+                   const std::vector<char>& speck,
+                   const std::vector<FeatureClass>& cls,
+                   int width,
+                   std::vector<std::uint32_t>& labels)
+{
+  const std::size_t n = band.size();
+  auto isFeature = [&](std::uint32_t label) {
+    return label != 0 &&
+           (cls[label] == FeatureClass::kEdge || cls[label] == FeatureClass::kVertex);
+  };
+  std::vector<char> skeleton(n, 0);
+  for (std::size_t c = 0; c < n; ++c)
+    skeleton[c] = isFeature(labels[c]) && core_labels[c] != 0 && !speck[core_labels[c]];
+
+  // Vertex-edge pairs that touch.
+  std::set<std::pair<std::uint32_t, std::uint32_t>> pairs;
+  for (std::size_t c = 0; c < n; ++c) {
+    if (labels[c] == 0 || cls[labels[c]] != FeatureClass::kVertex)
+      continue;
+    for (const CellId nb : band.neighbours(static_cast<CellId>(c)))
+      if (nb != kNoCell && labels[static_cast<std::size_t>(nb)] != 0 &&
+          cls[labels[static_cast<std::size_t>(nb)]] == FeatureClass::kEdge)
+        pairs.emplace(labels[c], labels[static_cast<std::size_t>(nb)]);
+  }
+  // Ridge paths: Dijkstra from the vertex's core cells through the two regions to the
+  // first core cell of the edge; low radii cost more, so the path follows the ridge.
+  const int cap = map.parameters().max_radius;
+  std::vector<double> cost(n, std::numeric_limits<double>::infinity());
+  std::vector<CellId> from(n, kNoCell), touched;
+  for (const auto& [vertex, edge] : pairs) {
+    for (const CellId c : touched) {
+      cost[static_cast<std::size_t>(c)] = std::numeric_limits<double>::infinity();
+      from[static_cast<std::size_t>(c)] = kNoCell;
+    }
+    touched.clear();
+    using Entry = std::pair<double, CellId>;
+    std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
+    for (std::size_t c = 0; c < n; ++c)
+      if (labels[c] == vertex && core_labels[c] != 0 && !speck[core_labels[c]]) {
+        cost[c] = 0.0;
+        touched.push_back(static_cast<CellId>(c));
+        queue.emplace(0.0, static_cast<CellId>(c));
+      }
+    CellId reached = kNoCell;
+    while (!queue.empty()) {
+      const auto [d, c] = queue.top();
+      queue.pop();
+      if (d > cost[static_cast<std::size_t>(c)])
+        continue;
+      const std::uint32_t core = core_labels[static_cast<std::size_t>(c)];
+      if (labels[static_cast<std::size_t>(c)] == edge && core != 0 && !speck[core]) {
+        reached = c;
+        break;
+      }
+      for (const CellId nb : band.neighbours(c)) {
+        if (nb == kNoCell)
+          continue;
+        const std::uint32_t l = labels[static_cast<std::size_t>(nb)];
+        if (l != vertex && l != edge)
+          continue;
+        const double next = d + 1.0 + std::max(0, cap - map.radius(nb));
+        if (next < cost[static_cast<std::size_t>(nb)]) {
+          cost[static_cast<std::size_t>(nb)] = next;
+          from[static_cast<std::size_t>(nb)] = c;
+          touched.push_back(nb);
+          queue.emplace(next, nb);
+        }
+      }
+    }
+    for (CellId c = reached; c != kNoCell; c = from[static_cast<std::size_t>(c)])
+      skeleton[static_cast<std::size_t>(c)] = 1;
+  }
+
+  // Keep feature cells within `width` steps of their region's skeleton.
+  std::vector<int> steps(n, -1);
+  std::vector<CellId> queue;
+  for (std::size_t c = 0; c < n; ++c)
+    if (skeleton[c]) {
+      steps[c] = 0;
+      queue.push_back(static_cast<CellId>(c));
+    }
+  for (std::size_t head = 0; head < queue.size(); ++head) {
+    const CellId c = queue[head];
+    if (steps[static_cast<std::size_t>(c)] >= width)
+      continue;
+    for (const CellId nb : band.neighbours(c))
+      if (nb != kNoCell && steps[static_cast<std::size_t>(nb)] < 0 &&
+          labels[static_cast<std::size_t>(nb)] == labels[static_cast<std::size_t>(c)]) {
+        steps[static_cast<std::size_t>(nb)] = steps[static_cast<std::size_t>(c)] + 1;
+        queue.push_back(nb);
+      }
+  }
+  // The rest of the feature cells go to the nearest face region (BFS from the faces).
+  std::vector<std::uint32_t> original = labels;
+  queue.clear();
+  for (std::size_t c = 0; c < n; ++c) {
+    if (isFeature(labels[c]) && steps[c] < 0)
+      labels[c] = 0;
+    else if (labels[c] != 0 && cls[labels[c]] == FeatureClass::kFace)
+      queue.push_back(static_cast<CellId>(c));
+  }
+  for (std::size_t head = 0; head < queue.size(); ++head)
+    for (const CellId nb : band.neighbours(queue[head]))
+      if (nb != kNoCell && labels[static_cast<std::size_t>(nb)] == 0 &&
+          original[static_cast<std::size_t>(nb)] != 0) {
+        labels[static_cast<std::size_t>(nb)] = labels[static_cast<std::size_t>(queue[head])];
+        queue.push_back(nb);
+      }
+  for (std::size_t c = 0; c < n; ++c) // enclosed cells no face reaches keep their label
+    if (labels[c] == 0)
+      labels[c] = original[c];
+}
+
+} // namespace
+
+void
+FeatureSegmentation::validate(const SegmentationParameters& p, int max_radius)
+{
+  ComponentSet::validate(p.components, max_radius);
+  if (p.min_piece_cells < 0 || p.min_piece_cells > 1000000) {
+    std::ostringstream msg;
+    msg << "min_piece_cells " << p.min_piece_cells
+        << " is out of range [0, 1000000] (cells)";
+    throw Error(msg.str());
+  }
+}
+
+std::array<std::size_t, 4>
+FeatureSegmentation::classCounts() const
+{
+  std::array<std::size_t, 4> counts{};
+  for (const Region& r : regions_)
+    ++counts[static_cast<std::size_t>(r.feature_class)];
+  return counts;
+}
+
+FeatureSegmentation
+FeatureSegmentation::compute(const VoxelBand& band,
+                             const VisibilityMap& map,
+                             const SegmentationParameters& parameters)
+{
+  validate(parameters, map.parameters().max_radius);
+  FeatureSegmentation result;
+  result.cores_ =
+    ComponentSet::extract(band, map, parameters.components, parameters.raw);
+  const std::vector<Component>& cores = result.cores_.components();
+  const std::size_t n = band.size();
+
+  // Outlier clusters: small band pieces get no label at all.
+  std::vector<std::uint32_t> seeds = result.cores_.cellLabels();
+  const std::vector<std::uint32_t> piece = bandPieceSizes(band);
+  for (std::size_t c = 0; c < n; ++c)
+    if (piece[c] < static_cast<std::uint32_t>(parameters.min_piece_cells))
+      seeds[c] = 0;
+
+  std::vector<FeatureClass> cls(cores.size() + 1, FeatureClass::kNone);
+  for (std::size_t l = 0; l < cores.size(); ++l)
+    cls[l + 1] = cores[l].feature_class;
+  LabelUnion sets(cores.size());
+  std::vector<std::uint32_t> labels;
+
+  if (parameters.raw) {
+    labels = seeds;
+  } else {
+    // Judge every core by the regions it grows into, then keep the cores' own cells
+    // only if regions are not wanted.
+    labels = growRegions(band, map, seeds);
+    auto faceNeighbours = [&](const Contacts& contacts, std::uint32_t a) {
+      std::vector<std::pair<std::uint32_t, std::uint32_t>> faces; // (contact, face)
+      for (auto it = contacts.lower_bound({a, 0});
+           it != contacts.end() && it->first.first == a; ++it)
+        if (cls[it->first.second] == FeatureClass::kFace)
+          faces.emplace_back(it->second, it->first.second);
+      std::sort(faces.rbegin(), faces.rend());
+      return faces;
+    };
+
+    // 3. Specks (touching at most one face) merge into their largest neighbour. The
+    // rest are edges between their two main faces, except small ones that meet edges
+    // of two different face pairs, or three faces: those are vertices (corner blobs).
+    std::map<std::uint32_t, std::pair<std::uint32_t, std::uint32_t>> signature;
+    Contacts contacts = contactsOf(band, labels, sets);
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> speck_merges;
+    std::vector<std::uint32_t> face_count(cores.size() + 1, 0);
+    std::vector<std::uint32_t> speck_into(cores.size() + 1, 0);
+    for (std::uint32_t l = 1; l <= cores.size(); ++l) {
+      if (cls[l] == FeatureClass::kFace)
+        continue;
+      const auto faces = faceNeighbours(contacts, l);
+      face_count[l] = static_cast<std::uint32_t>(faces.size());
+      if (faces.size() <= 1) {
+        cls[l] = FeatureClass::kNone; // a speck unless the vertex test below claims it
+        std::uint32_t best_contact = 0;
+        for (auto it = contacts.lower_bound({l, 0});
+             it != contacts.end() && it->first.first == l; ++it)
+          if (it->second > best_contact) {
+            best_contact = it->second;
+            speck_into[l] = it->first.second;
+          }
+        continue;
+      }
+      cls[l] = FeatureClass::kEdge;
+      signature[l] = std::minmax(faces[0].second, faces[1].second);
+    }
+    // Geodesic dilation of a small core through the band (the paper's vertex test):
+    // the cores it reaches within vertex_reach cells.
+    const std::uint32_t reach = static_cast<std::uint32_t>(parameters.vertex_reach);
+    const std::vector<std::uint32_t>& core_of = result.cores_.cellLabels();
+    std::vector<std::uint32_t> dist(n, std::uint32_t(-1));
+    std::vector<CellId> touched, queue;
+    auto dilate = [&](std::uint32_t l, const std::vector<CellId>& cells) {
+      std::set<std::uint32_t> met;
+      for (const CellId c : touched)
+        dist[static_cast<std::size_t>(c)] = std::uint32_t(-1);
+      touched.clear();
+      queue = cells;
+      for (const CellId c : cells)
+        dist[static_cast<std::size_t>(c)] = 0;
+      touched = cells;
+      for (std::size_t head = 0; head < queue.size(); ++head) {
+        const CellId c = queue[head];
+        const std::uint32_t d = dist[static_cast<std::size_t>(c)];
+        const std::uint32_t other = core_of[static_cast<std::size_t>(c)];
+        if (other != 0 && other != l)
+          met.insert(other);
+        if (d == reach)
+          continue;
+        for (const CellId nb : band.neighbours(c))
+          if (nb != kNoCell &&
+              dist[static_cast<std::size_t>(nb)] == std::uint32_t(-1)) {
+            dist[static_cast<std::size_t>(nb)] = d + 1;
+            touched.push_back(nb);
+            queue.push_back(nb);
+          }
+      }
+      return met;
+    };
+    std::vector<std::vector<CellId>> core_cells(cores.size() + 1);
+    for (std::size_t c = 0; c < n; ++c)
+      if (seeds[c] != 0)
+        core_cells[seeds[c]].push_back(static_cast<CellId>(c));
+    const auto vertex_max =
+      static_cast<std::uint32_t>(parameters.components.vertex_max_cells);
+    std::vector<std::uint32_t> vertices;
+    std::map<std::uint32_t, std::set<std::uint32_t>> reached;
+    for (std::uint32_t l = 1; l <= cores.size(); ++l) {
+      if (cores[l - 1].feature_class == FeatureClass::kFace ||
+          cores[l - 1].cells > vertex_max || core_cells[l].empty())
+        continue;
+      reached[l] = dilate(l, core_cells[l]);
+      std::set<std::pair<std::uint32_t, std::uint32_t>> met;
+      if (signature.count(l))
+        met.insert(signature[l]);
+      std::size_t faces_met = 0;
+      for (const std::uint32_t m : reached[l]) {
+        if (signature.count(m))
+          met.insert(signature[m]);
+        faces_met += cls[m] == FeatureClass::kFace;
+      }
+      if (face_count[l] >= 3 || faces_met >= 3 || met.size() >= 2)
+        vertices.push_back(l);
+    }
+    for (const std::uint32_t l : vertices) {
+      cls[l] = FeatureClass::kVertex;
+      signature.erase(l);
+      speck_into[l] = 0;
+    }
+    for (std::uint32_t l = 1; l <= cores.size(); ++l)
+      if (speck_into[l] != 0)
+        speck_merges.emplace_back(speck_into[l], l);
+    // Vertex candidates within reach of each other mark one corner.
+    const std::set<std::uint32_t> vertex_set(vertices.begin(), vertices.end());
+    for (const std::uint32_t l : vertices)
+      for (const std::uint32_t m : reached[l])
+        if (vertex_set.count(m))
+          sets.join(l, m);
+    // A speck takes its neighbour's class; chains of specks resolve through the union.
+    std::vector<char> speck(cores.size() + 1, 0);
+    for (const auto& [into, l] : speck_merges) {
+      sets.attach(into, l);
+      speck[l] = 1;
+    }
+    // Specks that merged into specks: such a set goes to its largest classified
+    // neighbour, until none is left that touches one.
+    for (bool changed = true; changed;) {
+      changed = false;
+      const Contacts around = contactsOf(band, labels, sets);
+      std::map<std::uint32_t, std::pair<std::uint32_t, std::uint32_t>> best; // contact, to
+      for (const auto& [pair, count] : around)
+        if (cls[pair.first] == FeatureClass::kNone && cls[pair.second] != FeatureClass::kNone &&
+            count > best[pair.first].first)
+          best[pair.first] = {count, pair.second};
+      for (const auto& [root, target] : best) {
+        sets.attach(target.second, root);
+        changed = true;
+      }
+    }
+    for (std::uint32_t l = 1; l <= cores.size(); ++l)
+      if (sets.find(l) != l && cls[l] != FeatureClass::kFace)
+        cls[l] = cls[sets.find(l)];
+
+    // 4. Fragments: touching edges with the same pair of faces, touching vertices.
+    for (bool changed = true; changed;) {
+      changed = false;
+      contacts = contactsOf(band, labels, sets);
+      for (const auto& [pair, count] : contacts) {
+        const auto [a, b] = pair;
+        if (a > b || cls[a] != cls[b])
+          continue;
+        const bool same_edge = cls[a] == FeatureClass::kEdge && signature.count(a) &&
+                               signature.count(b) && signature[a] == signature[b];
+        if (same_edge || cls[a] == FeatureClass::kVertex) {
+          sets.join(a, b);
+          changed = true;
+        }
+      }
+    }
+    // 5. Two corners share at most one edge: vertex candidates whose reached edges
+    // share two or more mark the same corner.
+    for (bool changed = true; changed;) {
+      changed = false;
+      std::map<std::uint32_t, std::set<std::uint32_t>> edges_of;
+      for (const std::uint32_t l : vertices)
+        for (const std::uint32_t m : reached[l])
+          if (cls[sets.find(m)] == FeatureClass::kEdge)
+            edges_of[sets.find(l)].insert(sets.find(m));
+      for (auto a = edges_of.begin(); a != edges_of.end() && !changed; ++a)
+        for (auto b = std::next(a); b != edges_of.end() && !changed; ++b) {
+          std::size_t shared = 0;
+          for (const std::uint32_t e : a->second)
+            shared += b->second.count(e);
+          if (shared >= 2) {
+            sets.join(a->first, b->first);
+            changed = true;
+          }
+        }
+    }
+    for (std::size_t c = 0; c < n; ++c) {
+      if (labels[c] == 0)
+        continue;
+      labels[c] = sets.find(labels[c]);
+      if (!parameters.complete_regions && result.cores_.cellLabels()[c] == 0)
+        labels[c] = 0;
+    }
+    if (parameters.complete_regions)
+      thinFeatureRegions(band, map, result.cores_.cellLabels(), speck, cls,
+                         parameters.feature_width, labels);
+  }
+
+  // Renumber 1.. by smallest cell id.
+  std::vector<std::uint32_t> renumber(cores.size() + 1, 0);
+  for (std::size_t c = 0; c < n; ++c) {
+    std::uint32_t& label = labels[c];
+    if (label == 0)
+      continue;
+    if (renumber[label] == 0) {
+      result.regions_.push_back(Region{cls[label], 0, 0});
+      renumber[label] = static_cast<std::uint32_t>(result.regions_.size());
+    }
+    label = renumber[label];
+    Region& region = result.regions_[label - 1];
+    ++region.cells;
+    if (result.cores_.cellLabels()[c] != 0)
+      ++region.core_cells;
+  }
+  result.labels_ = std::move(labels);
+  return result;
+}
+
+} // namespace visfeat

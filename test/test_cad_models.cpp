@@ -1,0 +1,544 @@
+// The synthetic CAD models (cad_models.h): truth counts and incidences, the Euler
+// characteristic, exact curve and face distances, uniform sampling, rotations, noise.
+
+#include <visfeat/cad_models.h>
+#include <visfeat/error.h>
+#include <visfeat/synthetic_shapes.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <random>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace {
+
+namespace syn = visfeat::synthetic;
+
+constexpr double kPi = 3.14159265358979323846;
+
+struct Counts
+{
+  std::size_t vertices, segments, circles, faces;
+};
+
+const std::map<std::string, Counts>&
+expectedCounts()
+{
+  static const std::map<std::string, Counts> counts{
+    {"cube", {8, 12, 0, 6}},          {"tetrahedron", {4, 6, 0, 4}},
+    {"icosahedron", {12, 30, 0, 20}}, {"triangular_prism", {6, 9, 0, 5}},
+    {"u_prism", {16, 24, 0, 10}},     {"box_with_hole", {8, 12, 2, 7}},
+    {"cylinder", {0, 0, 2, 3}},
+  };
+  return counts;
+}
+
+std::size_t
+countCurves(const syn::CadModel& model, syn::CadCurve::Kind kind)
+{
+  return static_cast<std::size_t>(
+    std::count_if(model.curves.begin(), model.curves.end(),
+                  [&](const syn::CadCurve& c) { return c.kind == kind; }));
+}
+
+bool
+isPolyhedron(const syn::CadModel& model)
+{
+  return countCurves(model, syn::CadCurve::Kind::kCircle) == 0;
+}
+
+syn::CadSamples
+sample(const syn::CadModel& model,
+       std::size_t count,
+       std::uint64_t seed,
+       double noise = 0.0)
+{
+  syn::SamplingOptions options;
+  options.count = count;
+  options.seed = seed;
+  options.noise_sigma = noise;
+  return syn::sampleCadModel(model, options);
+}
+
+/** The id of the segment between the vertices nearest to a and b. */
+int
+segmentBetween(const syn::CadModel& model,
+               const Eigen::Vector3d& a,
+               const Eigen::Vector3d& b)
+{
+  const auto nearest = [&](const Eigen::Vector3d& p) {
+    int best = -1;
+    for (std::size_t v = 0; v < model.vertices.size(); ++v)
+      if (best < 0 || (model.vertices[v] - p).norm() <
+                        (model.vertices[static_cast<std::size_t>(best)] - p).norm())
+        best = static_cast<int>(v);
+    return best;
+  };
+  const int va = nearest(a), vb = nearest(b);
+  for (const syn::CadCurve& c : model.curves)
+    if (c.kind == syn::CadCurve::Kind::kSegment &&
+        std::set<int>{c.vertices[0], c.vertices[1]} == std::set<int>{va, vb})
+      return c.id;
+  return -1;
+}
+
+TEST(CadModels, NamesAndTruthCounts)
+{
+  const std::vector<std::string> names = syn::cadModelNames();
+  ASSERT_EQ(names.size(), expectedCounts().size());
+  for (const std::string& name : names) {
+    SCOPED_TRACE(name);
+    ASSERT_EQ(expectedCounts().count(name), 1u);
+    const Counts& expected = expectedCounts().at(name);
+    const syn::CadModel model = syn::cadModelByName(name);
+    EXPECT_EQ(model.name, name);
+    EXPECT_NO_THROW(syn::checkCadModel(model));
+    EXPECT_EQ(model.vertices.size(), expected.vertices);
+    EXPECT_EQ(countCurves(model, syn::CadCurve::Kind::kSegment), expected.segments);
+    EXPECT_EQ(countCurves(model, syn::CadCurve::Kind::kCircle), expected.circles);
+    EXPECT_EQ(model.curves.size(), expected.segments + expected.circles);
+    EXPECT_EQ(model.faces.size(), expected.faces);
+    for (std::size_t i = 0; i < model.curves.size(); ++i)
+      EXPECT_EQ(model.curves[i].id, static_cast<int>(i));
+    for (std::size_t i = 0; i < model.faces.size(); ++i)
+      EXPECT_EQ(model.faces[i].id, static_cast<int>(i));
+    // Centred at the origin.
+    EXPECT_LT(model.bounds().center().norm(), 1e-12);
+  }
+}
+
+TEST(CadModels, EulerCharacteristic)
+{
+  for (const std::string& name : syn::cadModelNames()) {
+    SCOPED_TRACE(name);
+    const syn::CadModel model = syn::cadModelByName(name);
+    if (isPolyhedron(model)) {
+      // V - E + F = 2: every polyhedron here is a topological sphere.
+      EXPECT_EQ(static_cast<int>(model.vertices.size()) -
+                  static_cast<int>(model.curves.size()) +
+                  static_cast<int>(model.faces.size()),
+                2);
+      EXPECT_EQ(syn::eulerCharacteristic(model), 2);
+    }
+  }
+  // box_with_hole: a torus (genus 1), chi = 0 = V - S + sum(1 - holes) over planar
+  // faces + 0 for the wall: 8 - 12 + (4 + 0 + 0) + 0. V - E + F = 8 - 14 + 7 = 1 does
+  // not apply (faces with holes are not discs, circles have no vertex). The straight
+  // edges alone form the box's wireframe (every vertex of degree 3) and the two circles
+  // are vertex-free loops, each between a holed face and the wall.
+  const syn::CadModel box = syn::cadModelByName("box_with_hole");
+  EXPECT_EQ(syn::eulerCharacteristic(box), 0);
+  for (const auto& curves : syn::vertexCurves(box))
+    EXPECT_EQ(curves.size(), 3u);
+  for (const syn::CadCurve& c : box.curves)
+    if (c.kind == syn::CadCurve::Kind::kCircle) {
+      EXPECT_EQ(c.vertices[0], -1);
+      EXPECT_EQ(c.vertices[1], -1);
+      const syn::CadFace& a = box.faces[static_cast<std::size_t>(c.faces[0])];
+      const syn::CadFace& b = box.faces[static_cast<std::size_t>(c.faces[1])];
+      EXPECT_EQ(a.kind, syn::CadFace::Kind::kPlanar);
+      EXPECT_EQ(a.circles.size(), 1u);
+      EXPECT_EQ(a.polygon.size(), 4u);
+      EXPECT_EQ(b.kind, syn::CadFace::Kind::kCylindrical);
+      EXPECT_TRUE(b.hole);
+    }
+  // cylinder: a sphere (chi 2) = 0 vertices - 0 segments + 2 discs + 0 (lateral);
+  // the curve network is two vertex-free circles, each between a disc and the lateral.
+  const syn::CadModel cyl = syn::cadModelByName("cylinder");
+  EXPECT_EQ(syn::eulerCharacteristic(cyl), 2);
+  for (const syn::CadCurve& c : cyl.curves) {
+    EXPECT_EQ(c.kind, syn::CadCurve::Kind::kCircle);
+    EXPECT_EQ(cyl.faces[static_cast<std::size_t>(c.faces[1])].kind,
+              syn::CadFace::Kind::kCylindrical);
+    EXPECT_FALSE(cyl.faces[static_cast<std::size_t>(c.faces[1])].hole);
+  }
+}
+
+TEST(CadModels, Incidences)
+{
+  for (const std::string& name : syn::cadModelNames()) {
+    SCOPED_TRACE(name);
+    const syn::CadModel model = syn::cadModelByName(name);
+    const auto vertex_curves = syn::vertexCurves(model);
+    const auto vertex_faces = syn::vertexFaces(model);
+    const auto face_curves = syn::faceCurves(model);
+    std::size_t degree_sum = 0;
+    for (std::size_t v = 0; v < model.vertices.size(); ++v) {
+      // A corner of a solid: as many faces as edges, at least 3.
+      EXPECT_GE(vertex_curves[v].size(), 3u);
+      EXPECT_EQ(vertex_faces[v].size(), vertex_curves[v].size());
+      for (int c : vertex_curves[v])
+        EXPECT_NEAR(syn::curveDistance(model, c, model.vertices[v]), 0.0, 1e-12);
+      degree_sum += vertex_curves[v].size();
+    }
+    EXPECT_EQ(degree_sum, 2 * countCurves(model, syn::CadCurve::Kind::kSegment));
+    for (const syn::CadCurve& c : model.curves) {
+      EXPECT_NE(c.faces[0], c.faces[1]);
+      for (int f : c.faces) {
+        const auto& fc = face_curves[static_cast<std::size_t>(f)];
+        EXPECT_TRUE(std::find(fc.begin(), fc.end(), c.id) != fc.end());
+      }
+      if (c.kind != syn::CadCurve::Kind::kSegment)
+        continue;
+      // A straight edge links exactly its two vertices, both on both of its faces.
+      EXPECT_NE(c.vertices[0], c.vertices[1]);
+      for (int v : c.vertices)
+        for (int f : c.faces) {
+          const auto& vf = vertex_faces[static_cast<std::size_t>(v)];
+          EXPECT_TRUE(std::find(vf.begin(), vf.end(), f) != vf.end());
+        }
+    }
+  }
+  const auto cube_faces = syn::vertexFaces(syn::cadModelByName("cube"));
+  for (const auto& faces : cube_faces)
+    EXPECT_EQ(faces.size(), 3u);
+  for (const auto& faces : syn::vertexFaces(syn::cadModelByName("icosahedron")))
+    EXPECT_EQ(faces.size(), 5u);
+}
+
+TEST(CadModels, FaceAreasAndBounds)
+{
+  const syn::CadModel cube = syn::cadModelByName("cube");
+  const double side = 2.0 / std::sqrt(3.0);
+  EXPECT_NEAR(cube.area(), 6 * side * side, 1e-12);
+  EXPECT_TRUE(cube.bounds().sizes().isApprox(Eigen::Vector3d::Constant(side), 1e-12));
+
+  const syn::CadModel box = syn::cadModelByName("box_with_hole");
+  EXPECT_NEAR(box.area(),
+              2 * (4.0 - kPi * 0.25) + 4 * (2.0 * 1.5) + 2 * kPi * 0.5 * 1.5, 1e-12);
+  EXPECT_TRUE(box.bounds().sizes().isApprox(Eigen::Vector3d(2, 2, 1.5), 1e-12));
+
+  const syn::CadModel cyl = syn::cadModelByName("cylinder");
+  EXPECT_NEAR(cyl.area(), 2 * kPi + 2 * kPi * 2, 1e-12);
+  EXPECT_TRUE(cyl.bounds().sizes().isApprox(Eigen::Vector3d(2, 2, 2), 1e-12));
+
+  // u_prism: every face at least 20% of the longest side wide (here: 1 of 3).
+  const syn::CadModel u = syn::cadModelByName("u_prism");
+  EXPECT_NEAR(u.area(), 2 * (9.0 - 2.0) + 1.5 * 16.0, 1e-12);
+  const double longest = u.bounds().sizes().maxCoeff();
+  for (const syn::CadCurve& c : u.curves)
+    EXPECT_GE(syn::curveLength(u, c.id), 0.2 * longest);
+
+  // The rotated bounds are exact: reached (nearly) by samples, never exceeded.
+  for (const char* name : {"cylinder", "box_with_hole", "u_prism"}) {
+    SCOPED_TRACE(name);
+    const syn::CadModel m =
+      syn::rotated(syn::cadModelByName(name), syn::randomRotation(17));
+    const Eigen::AlignedBox3d box3 = m.bounds();
+    const syn::CadSamples s = sample(m, 20000, 3);
+    Eigen::AlignedBox3d reached;
+    for (const Eigen::Vector3f& p : s.points) {
+      reached.extend(p.cast<double>());
+      EXPECT_TRUE(box3.exteriorDistance(p.cast<double>()) < 1e-6);
+    }
+    EXPECT_LT((reached.sizes() - box3.sizes()).cwiseAbs().maxCoeff(),
+              0.03 * box3.sizes().maxCoeff());
+  }
+}
+
+TEST(CadModels, SamplesLieOnTheirFaceWithTheirCurveDistance)
+{
+  for (const std::string& name : syn::cadModelNames()) {
+    SCOPED_TRACE(name);
+    const syn::CadModel model =
+      syn::rotated(syn::cadModelByName(name), syn::randomRotation(5));
+    const syn::CadSamples s = sample(model, 3000, 11);
+    ASSERT_EQ(s.points.size(), 3000u);
+    ASSERT_EQ(s.face.size(), 3000u);
+    ASSERT_EQ(s.curve_distance.size(), 3000u);
+    for (std::size_t i = 0; i < s.points.size(); ++i) {
+      const Eigen::Vector3d p = s.points[i].cast<double>();
+      ASSERT_GE(s.face[i], 0);
+      ASSERT_LT(s.face[i], static_cast<int>(model.faces.size()));
+      EXPECT_LT(syn::faceDistance(model, s.face[i], p), 1e-5);
+      EXPECT_NEAR(s.curve_distance[i], syn::curveDistance(model, p), 1e-5);
+    }
+  }
+}
+
+TEST(CadModels, SamplingIsUniformByArea)
+{
+  const std::size_t n = 60000;
+  for (const char* name :
+       {"triangular_prism", "u_prism", "box_with_hole", "cylinder"}) {
+    SCOPED_TRACE(name);
+    const syn::CadModel model = syn::cadModelByName(name);
+    const syn::CadSamples s = sample(model, n, 21);
+    std::vector<double> share(model.faces.size(), 0.0);
+    for (int f : s.face)
+      share[static_cast<std::size_t>(f)] += 1.0 / static_cast<double>(n);
+    for (std::size_t f = 0; f < model.faces.size(); ++f) {
+      const double p = syn::faceArea(model, static_cast<int>(f)) / model.area();
+      // Binomial: 5 standard deviations (a few percent of the share at most).
+      EXPECT_NEAR(share[f], p, 5.0 * std::sqrt(p * (1 - p) / static_cast<double>(n)))
+        << "face " << f;
+    }
+  }
+}
+
+TEST(CadModels, SamplingIsUniformWithinFaces)
+{
+  // Cube: on a face of side s, the points within d of the face's boundary are
+  // 1 - (1 - 2d/s)^2 of it, and that boundary is the nearest sharp curve.
+  const std::size_t n = 60000;
+  const syn::CadModel cube = syn::cadModelByName("cube");
+  const double side = 2.0 / std::sqrt(3.0);
+  const syn::CadSamples s = sample(cube, n, 31);
+  for (double d : {0.05, 0.15, 0.3}) {
+    const double expected = 1.0 - std::pow(1.0 - 2.0 * d / side, 2);
+    const double got = static_cast<double>(
+                         std::count_if(s.curve_distance.begin(), s.curve_distance.end(),
+                                       [&](double x) { return x < d; })) /
+                       static_cast<double>(n);
+    EXPECT_NEAR(got, expected, 5.0 * std::sqrt(expected * (1 - expected) / n))
+      << "d = " << d;
+  }
+  // Cylinder (r 1, h 2): within d of a rim: the ring 1 - (1 - d)^2 of each disc and
+  // 2d/h of the lateral face.
+  const syn::CadModel cyl = syn::cadModelByName("cylinder");
+  const syn::CadSamples c = sample(cyl, n, 32);
+  for (double d : {0.05, 0.2, 0.5}) {
+    const double near_area =
+      2 * kPi * (1.0 - std::pow(1.0 - d, 2)) + 2 * kPi * 2.0 * (2.0 * d / 2.0);
+    const double expected = near_area / cyl.area();
+    const double got = static_cast<double>(
+                         std::count_if(c.curve_distance.begin(), c.curve_distance.end(),
+                                       [&](double x) { return x < d; })) /
+                       static_cast<double>(n);
+    EXPECT_NEAR(got, expected, 5.0 * std::sqrt(expected * (1 - expected) / n))
+      << "d = " << d;
+  }
+}
+
+TEST(CadModels, CurveDistanceIsExact)
+{
+  const syn::CadModel cube = syn::cadModelByName("cube");
+  const double a = 1.0 / std::sqrt(3.0); // half side
+  const int edge = segmentBetween(cube, {-a, -a, -a}, {a, -a, -a});
+  ASSERT_GE(edge, 0);
+  const Eigen::Vector3d mid(0, -a, -a);
+  EXPECT_NEAR(syn::curveDistance(cube, edge, mid), 0.0, 1e-15);
+  EXPECT_NEAR(syn::curveDistance(cube, mid), 0.0, 1e-15);
+  // Outwards from the edge midpoint, perpendicular to it: 0.3-0.4-0.5.
+  EXPECT_NEAR(syn::curveDistance(cube, mid + Eigen::Vector3d(0, -0.3, -0.4)), 0.5,
+              1e-14);
+  EXPECT_NEAR(syn::curveDistance(cube, edge, mid + Eigen::Vector3d(0, -0.3, -0.4)), 0.5,
+              1e-14);
+  // Along the edge: still on it; beyond its end: the distance to the corner.
+  EXPECT_NEAR(syn::curveDistance(cube, edge, mid + Eigen::Vector3d(0.5, 0, 0)), 0.0,
+              1e-15);
+  EXPECT_NEAR(syn::curveDistance(cube, edge, Eigen::Vector3d(a + 0.3, -a - 0.4, -a)),
+              0.5, 1e-14);
+  EXPECT_NEAR(syn::curveDistance(cube, Eigen::Vector3d(a + 0.3, -a, -a)), 0.3, 1e-14);
+  // Face centre: a from its four edges; cube centre: a * sqrt(2).
+  EXPECT_NEAR(syn::curveDistance(cube, Eigen::Vector3d(0, -a, 0)), a, 1e-14);
+  EXPECT_NEAR(syn::curveDistance(cube, Eigen::Vector3d::Zero()), a * std::sqrt(2.0),
+              1e-14);
+
+  // Cylinder (r 1, circles at z = -1 and 1).
+  const syn::CadModel cyl = syn::cadModelByName("cylinder");
+  EXPECT_NEAR(syn::curveDistance(cyl, Eigen::Vector3d(0, 0, 0)), std::sqrt(2.0), 1e-14);
+  EXPECT_NEAR(syn::curveDistance(cyl, Eigen::Vector3d(0, 0, 1)), 1.0, 1e-14);
+  EXPECT_NEAR(syn::curveDistance(cyl, Eigen::Vector3d(0, 0, 3)), std::sqrt(5.0), 1e-14);
+  EXPECT_NEAR(syn::curveDistance(cyl, Eigen::Vector3d(2, 0, 1)), 1.0, 1e-14);
+  EXPECT_NEAR(syn::curveDistance(cyl, Eigen::Vector3d(0.3, 0.4, 1.2)),
+              std::hypot(0.2, 0.5), 1e-14);
+  EXPECT_NEAR(syn::curveDistance(cyl, Eigen::Vector3d(0.6, 0.8, 1.0)), 0.0, 1e-14);
+  EXPECT_NEAR(syn::curveDistance(cyl, 0, Eigen::Vector3d(0.6, 0.8, 1.0)), 2.0, 1e-14);
+
+  // Box with a hole of radius 0.5 along z (circles at z = -0.75 and 0.75): from the
+  // centre the circles are nearer than the straight edges (1.25 and sqrt 2).
+  const syn::CadModel box = syn::cadModelByName("box_with_hole");
+  EXPECT_NEAR(syn::curveDistance(box, Eigen::Vector3d::Zero()), std::hypot(0.5, 0.75),
+              1e-14);
+  EXPECT_NEAR(syn::curveDistance(box, Eigen::Vector3d(1.0, 1.0, 0.0)), 0.0, 1e-14);
+  // On the top face halfway between the hole and an edge.
+  EXPECT_NEAR(syn::curveDistance(box, Eigen::Vector3d(0.75, 0.0, 0.75)), 0.25, 1e-14);
+
+  // Face distances: in the face's plane outside it, above it, and on the wall.
+  EXPECT_NEAR(syn::faceDistance(box, 1, Eigen::Vector3d(0, 0, 0.75)), 0.5, 1e-14);
+  EXPECT_NEAR(syn::faceDistance(box, 1, Eigen::Vector3d(0.75, 0, 1.0)), 0.25, 1e-14);
+  EXPECT_NEAR(syn::faceDistance(box, 6, Eigen::Vector3d(0.2, 0, 0.1)), 0.3, 1e-14);
+  EXPECT_NEAR(syn::faceDistance(box, 6, Eigen::Vector3d(0.5, 0, 1.75)), 1.0, 1e-14);
+}
+
+TEST(CadModels, RotationInvariance)
+{
+  std::mt19937_64 rng(8);
+  std::uniform_real_distribution<double> coord(-2.0, 2.0);
+  for (const std::string& name : syn::cadModelNames()) {
+    SCOPED_TRACE(name);
+    const syn::CadModel model = syn::cadModelByName(name);
+    const Eigen::Matrix3d r = syn::randomRotation(99);
+    const syn::CadModel turned = syn::rotated(model, r);
+    EXPECT_NO_THROW(syn::checkCadModel(turned));
+    EXPECT_NEAR(turned.area(), model.area(), 1e-9);
+    EXPECT_EQ(syn::eulerCharacteristic(turned), syn::eulerCharacteristic(model));
+    for (int i = 0; i < 200; ++i) {
+      const Eigen::Vector3d p(coord(rng), coord(rng), coord(rng));
+      EXPECT_NEAR(syn::curveDistance(turned, r * p), syn::curveDistance(model, p),
+                  1e-12);
+      const int f = i % static_cast<int>(model.faces.size());
+      EXPECT_NEAR(syn::faceDistance(turned, f, r * p), syn::faceDistance(model, f, p),
+                  1e-12);
+    }
+    // Sampling under a rotation = rotating the samples; truth unchanged.
+    syn::SamplingOptions options;
+    options.count = 500;
+    options.seed = 4;
+    const syn::CadSamples plain = syn::sampleCadModel(model, options);
+    options.rotation = r;
+    const syn::CadSamples spun = syn::sampleCadModel(model, options);
+    ASSERT_EQ(plain.points.size(), spun.points.size());
+    for (std::size_t i = 0; i < plain.points.size(); ++i) {
+      EXPECT_LT(
+        (spun.points[i].cast<double>() - r * plain.points[i].cast<double>()).norm(),
+        1e-5);
+      EXPECT_EQ(spun.face[i], plain.face[i]);
+      EXPECT_EQ(spun.curve_distance[i], plain.curve_distance[i]);
+    }
+  }
+}
+
+TEST(CadModels, NoiseHasTheRequestedSigma)
+{
+  const syn::CadModel model = syn::cadModelByName("box_with_hole");
+  const double sigma = 0.01;
+  const std::size_t n = 30000;
+  const syn::CadSamples clean = sample(model, n, 77);
+  const syn::CadSamples noisy = sample(model, n, 77, sigma);
+  ASSERT_EQ(noisy.points.size(), n);
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero(), sum2 = Eigen::Vector3d::Zero();
+  for (std::size_t i = 0; i < n; ++i) {
+    // Same noise-free samples (the noise comes from its own stream), same truth.
+    EXPECT_EQ(noisy.face[i], clean.face[i]);
+    EXPECT_EQ(noisy.curve_distance[i], clean.curve_distance[i]);
+    const Eigen::Vector3d d =
+      noisy.points[i].cast<double>() - clean.points[i].cast<double>();
+    sum += d;
+    sum2 += d.cwiseProduct(d);
+  }
+  const Eigen::Vector3d mean = sum / static_cast<double>(n);
+  const Eigen::Vector3d sd = (sum2 / static_cast<double>(n)).cwiseSqrt();
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_LT(std::abs(mean[k]), 5.0 * sigma / std::sqrt(static_cast<double>(n)));
+    EXPECT_NEAR(sd[k], sigma, 0.03 * sigma); // sd of the sd: sigma / sqrt(2n) ~ 0.4%
+  }
+}
+
+TEST(CadModels, SpacingAndReproducibility)
+{
+  const syn::CadModel model =
+    syn::rotated(syn::cadModelByName("u_prism"), syn::randomRotation(3));
+  const double cell = syn::cellSize(model, 64);
+  EXPECT_NEAR(cell, model.bounds().sizes().maxCoeff() / 64, 1e-15);
+  const std::size_t count = syn::samplesForSpacing(model, 64, 0.5);
+  EXPECT_EQ(
+    count, static_cast<std::size_t>(std::ceil(model.area() / std::pow(0.5 * cell, 2))));
+  syn::SamplingOptions options;
+  options.spacing = 0.5 * cell;
+  options.seed = 12;
+  const syn::CadSamples a = syn::sampleCadModel(model, options);
+  EXPECT_EQ(a.points.size(), count);
+  const syn::CadSamples b = syn::sampleCadModel(model, options);
+  EXPECT_EQ(a.points, b.points);
+  EXPECT_EQ(a.face, b.face);
+  options.seed = 13;
+  EXPECT_NE(syn::sampleCadModel(model, options).points, a.points);
+}
+
+TEST(CadModels, Json)
+{
+  const std::string json = syn::cadModelJson(syn::cadModelByName("box_with_hole"));
+  EXPECT_NE(json.find("\"name\": \"box_with_hole\""), std::string::npos);
+  EXPECT_NE(
+    json.find("\"counts\": {\"vertices\": 8, \"edges\": 14, \"straight_edges\": "
+              "12, \"circular_edges\": 2, \"faces\": 7}"),
+    std::string::npos);
+  EXPECT_NE(json.find("\"euler_characteristic\": 0"), std::string::npos);
+  EXPECT_NE(json.find("\"kind\": \"circle\", \"vertices\": [], \"faces\": [0, 6]"),
+            std::string::npos);
+  EXPECT_NE(json.find("\"kind\": \"cylindrical\""), std::string::npos);
+  EXPECT_EQ(std::count(json.begin(), json.end(), '{'),
+            std::count(json.begin(), json.end(), '}'));
+  EXPECT_EQ(std::count(json.begin(), json.end(), '['),
+            std::count(json.begin(), json.end(), ']'));
+}
+
+TEST(CadModels, Errors)
+{
+  try {
+    syn::cadModelByName("dodecahedron");
+    FAIL() << "no exception";
+  } catch (const visfeat::Error& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("dodecahedron"), std::string::npos);
+    for (const std::string& name : syn::cadModelNames())
+      EXPECT_NE(what.find(name), std::string::npos) << name;
+  }
+  const syn::CadModel cube = syn::cadModelByName("cube");
+  syn::SamplingOptions options; // neither a count nor a spacing
+  EXPECT_THROW(syn::sampleCadModel(cube, options), visfeat::Error);
+  options.count = 10;
+  options.noise_sigma = -1.0;
+  EXPECT_THROW(syn::sampleCadModel(cube, options), visfeat::Error);
+  options.noise_sigma = std::nan("");
+  EXPECT_THROW(syn::sampleCadModel(cube, options), visfeat::Error);
+  EXPECT_THROW(syn::samplesForSpacing(cube, 64, 0.0), visfeat::Error);
+  EXPECT_THROW(syn::cellSize(cube, 0), visfeat::Error);
+
+  // An open mesh (a cube without its last face) and a broken incidence.
+  syn::PolygonMesh open = syn::platonicSolid("cube");
+  open.faces.pop_back();
+  EXPECT_THROW(syn::polyhedralModel("open", open), visfeat::Error);
+  syn::PolygonMesh flipped = syn::platonicSolid("cube");
+  std::reverse(flipped.faces[0].begin(), flipped.faces[0].end());
+  EXPECT_THROW(syn::polyhedralModel("flipped", flipped), visfeat::Error);
+  syn::CadModel broken = cube; // curve 0 given a face it does not bound
+  for (int f = 0; f < 6; ++f)
+    if (f != broken.curves[0].faces[0] && f != broken.curves[0].faces[1]) {
+      broken.curves[0].faces[1] = f;
+      break;
+    }
+  EXPECT_THROW(syn::checkCadModel(broken), visfeat::Error);
+  syn::CadModel box = syn::cadModelByName("box_with_hole");
+  box.curves.back().radius = 0.6; // the wall's circles differ
+  EXPECT_THROW(syn::checkCadModel(box), visfeat::Error);
+}
+
+TEST(SyntheticShapes, PolygonMeshesAndHull)
+{
+  const std::map<std::string, std::pair<std::size_t, std::size_t>> expected{
+    {"tetrahedron", {4, 3}},
+    {"cube", {6, 4}},
+    {"octahedron", {8, 3}},
+    {"icosahedron", {20, 3}}};
+  for (const auto& [name, faces] : expected) {
+    SCOPED_TRACE(name);
+    const syn::PolygonMesh mesh = syn::platonicSolid(name);
+    ASSERT_EQ(mesh.faces.size(), faces.first);
+    for (const auto& f : mesh.faces)
+      EXPECT_EQ(f.size(), faces.second);
+    for (const auto& v : mesh.vertices)
+      EXPECT_NEAR(v.norm(), 1.0, 1e-12);
+    const syn::TriangleMesh tri = syn::shapeByName(name);
+    EXPECT_EQ(tri.triangles.size(), faces.first * (faces.second - 2));
+    EXPECT_NEAR(tri.area(), syn::polyhedralModel(name, mesh).area(), 1e-12);
+  }
+  // A hull away from the origin, with coplanar points merged into quads.
+  std::vector<Eigen::Vector3d> corners;
+  for (int i = 0; i < 8; ++i)
+    corners.emplace_back(5 + (i & 1), 5 + (i & 2 ? 2 : 0), 5 + (i & 4 ? 3 : 0));
+  const syn::PolygonMesh box = syn::convexHull(corners);
+  EXPECT_EQ(box.faces.size(), 6u);
+  const syn::CadModel model = syn::polyhedralModel("box", box);
+  EXPECT_NEAR(model.area(), 2 * (1 * 2 + 2 * 3 + 1 * 3), 1e-12);
+  EXPECT_THROW(syn::shapeByName("dodecahedron"), visfeat::Error);
+}
+
+} // namespace

@@ -1,0 +1,982 @@
+// TopologyGraph: arcs from the dilation test (against hand-worked layouts and a
+// brute-force geodesic distance), node geometry in world units, queries, DOT / JSON
+// export and writeFile.
+
+#include "band_fixtures.h"
+
+#include <visfeat/error.h>
+#include <visfeat/feature_class.h>
+#include <visfeat/topology_graph.h>
+#include <visfeat/voxel_band.h>
+
+#include <boost/graph/connected_components.hpp>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <map>
+#include <memory>
+#include <queue>
+#include <random>
+#include <set>
+#include <sstream>
+
+namespace {
+
+using visfeat::CellCoord;
+using visfeat::CellId;
+using visfeat::FeatureClass;
+using visfeat::GraphMetadata;
+using visfeat::GraphNode;
+using visfeat::GridSpec;
+using visfeat::kNoCell;
+using visfeat::TopologyGraph;
+using visfeat::TopologyGraphParameters;
+using visfeat::VoxelBand;
+using Arcs = std::vector<std::pair<std::uint32_t, std::uint32_t>>;
+using Ids = std::vector<std::uint32_t>;
+
+constexpr FeatureClass kV = FeatureClass::kVertex;
+constexpr FeatureClass kE = FeatureClass::kEdge;
+constexpr FeatureClass kF = FeatureClass::kFace;
+
+/** A grid with a non-trivial origin and cell size. */
+GridSpec
+testGrid(int nx = 40, int ny = 16, int nz = 16)
+{
+  GridSpec grid;
+  grid.origin = Eigen::Vector3d(-1.5, 2.0, 0.25);
+  grid.cell_size = 0.5;
+  grid.dims = Eigen::Vector3i(nx, ny, nz);
+  return grid;
+}
+
+VoxelBand
+bandOf(const GridSpec& grid, const std::vector<CellCoord>& cells)
+{
+  VoxelBand::Options options;
+  options.repair = false;
+  return VoxelBand::fromCells(grid, cells, options);
+}
+
+/** Per cell of the band, the label the function gives its coordinates. */
+std::vector<std::uint32_t>
+labelBand(const VoxelBand& band,
+          const std::function<std::uint32_t(const CellCoord&)>& f)
+{
+  std::vector<std::uint32_t> labels(band.size());
+  for (std::size_t i = 0; i < band.size(); ++i)
+    labels[i] = f(band.coord(static_cast<CellId>(i)));
+  return labels;
+}
+
+TopologyGraph
+buildGraph(const VoxelBand& band,
+           const std::vector<std::uint32_t>& labels,
+           const std::vector<FeatureClass>& classes,
+           int radius)
+{
+  TopologyGraphParameters p;
+  p.dilation_radius = radius;
+  return TopologyGraph::build(band, labels, classes, p);
+}
+
+// --- Fixtures ------------------------------------------------------------------
+
+/** An L-shaped one-cell strip: V4 | F1 | E2 | F3, F3 turning up in y at its end.
+ *  x = 2..3 V4, 4..9 F1, 10..11 E2, 12..19 F3 (y = 2, z = 2); (19, 3..6, 2) F3. */
+struct Strip
+{
+  GridSpec grid = testGrid();
+  VoxelBand band;
+  std::vector<std::uint32_t> labels;
+  std::vector<FeatureClass> classes{kF, kE, kF, kV};
+
+  Strip()
+  {
+    std::vector<CellCoord> cells;
+    for (int x = 2; x <= 19; ++x)
+      cells.emplace_back(x, 2, 2);
+    for (int y = 3; y <= 6; ++y)
+      cells.emplace_back(19, y, 2);
+    band = bandOf(grid, cells);
+    labels = labelBand(band, [](const CellCoord& c) -> std::uint32_t {
+      if (c.x() <= 3)
+        return 4;
+      if (c.x() <= 9)
+        return 1;
+      if (c.x() <= 11)
+        return 2;
+      return 3;
+    });
+  }
+};
+
+/** A sheet z = 2, x 2..15, y 2..9, with complete regions:
+ *  F1 below the row y = 5, F3 above it; E2 the row y = 5 for x <= 10; V4 the block
+ *  x 11..12, y 4..6; V5 the column x = 13, y 4..6; for x >= 14 the faces touch
+ *  directly (F1 takes y = 5). Label 6 is an edge with no cells. */
+struct Sheet
+{
+  GridSpec grid = testGrid();
+  VoxelBand band;
+  std::vector<std::uint32_t> labels;
+  std::vector<FeatureClass> classes{kF, kE, kF, kV, kV, kE};
+
+  Sheet()
+  {
+    std::vector<CellCoord> cells;
+    for (int y = 2; y <= 9; ++y)
+      for (int x = 2; x <= 15; ++x)
+        cells.emplace_back(x, y, 2);
+    band = bandOf(grid, cells);
+    labels = labelBand(band, [](const CellCoord& c) -> std::uint32_t {
+      const int x = c.x(), y = c.y();
+      if (x >= 11 && x <= 12 && y >= 4 && y <= 6)
+        return 4;
+      if (x == 13 && y >= 4 && y <= 6)
+        return 5;
+      if (y == 5 && x <= 10)
+        return 2;
+      if (y < 5 || (y == 5 && x >= 14))
+        return 1;
+      return 3;
+    });
+  }
+};
+
+// --- Minimal JSON reader (structure check) ------------------------------------
+
+struct Json
+{
+  enum class Type
+  {
+    kNull,
+    kBool,
+    kNumber,
+    kString,
+    kArray,
+    kObject
+  } type = Type::kNull;
+  bool boolean = false;
+  double number = 0.0;
+  std::string text; // string value, or the raw number text
+  std::vector<Json> items;
+  std::vector<std::pair<std::string, Json>> members;
+
+  const Json& operator[](const std::string& key) const
+  {
+    for (const auto& m : members)
+      if (m.first == key)
+        return m.second;
+    throw std::runtime_error("no member " + key);
+  }
+  bool has(const std::string& key) const
+  {
+    for (const auto& m : members)
+      if (m.first == key)
+        return true;
+    return false;
+  }
+};
+
+/** Strict recursive-descent JSON parser (RFC 8259); throws std::runtime_error. */
+class JsonParser
+{
+public:
+  explicit JsonParser(const std::string& s)
+      : s_(s)
+  {}
+
+  Json parseDocument()
+  {
+    Json v = parseValue();
+    skipSpace();
+    if (i_ != s_.size())
+      fail("trailing characters");
+    return v;
+  }
+
+private:
+  [[noreturn]] void fail(const std::string& what) const
+  {
+    throw std::runtime_error("JSON: " + what + " at offset " + std::to_string(i_));
+  }
+  void skipSpace()
+  {
+    while (i_ < s_.size() &&
+           (s_[i_] == ' ' || s_[i_] == '\n' || s_[i_] == '\t' || s_[i_] == '\r'))
+      ++i_;
+  }
+  bool consume(const std::string& word)
+  {
+    if (s_.compare(i_, word.size(), word) == 0) {
+      i_ += word.size();
+      return true;
+    }
+    return false;
+  }
+  void expect(char c)
+  {
+    skipSpace();
+    if (i_ >= s_.size() || s_[i_] != c)
+      fail(std::string("expected '") + c + "'");
+    ++i_;
+  }
+  Json parseValue()
+  {
+    skipSpace();
+    if (i_ >= s_.size())
+      fail("unexpected end");
+    Json v;
+    const char c = s_[i_];
+    if (c == '{') {
+      v.type = Json::Type::kObject;
+      ++i_;
+      skipSpace();
+      if (i_ < s_.size() && s_[i_] == '}') {
+        ++i_;
+        return v;
+      }
+      for (;;) {
+        skipSpace();
+        const std::string key = parseString();
+        expect(':');
+        v.members.emplace_back(key, parseValue());
+        skipSpace();
+        if (i_ < s_.size() && s_[i_] == ',') {
+          ++i_;
+          continue;
+        }
+        expect('}');
+        return v;
+      }
+    }
+    if (c == '[') {
+      v.type = Json::Type::kArray;
+      ++i_;
+      skipSpace();
+      if (i_ < s_.size() && s_[i_] == ']') {
+        ++i_;
+        return v;
+      }
+      for (;;) {
+        v.items.push_back(parseValue());
+        skipSpace();
+        if (i_ < s_.size() && s_[i_] == ',') {
+          ++i_;
+          continue;
+        }
+        expect(']');
+        return v;
+      }
+    }
+    if (c == '"') {
+      v.type = Json::Type::kString;
+      v.text = parseString();
+      return v;
+    }
+    if (consume("true")) {
+      v.type = Json::Type::kBool;
+      v.boolean = true;
+      return v;
+    }
+    if (consume("false")) {
+      v.type = Json::Type::kBool;
+      return v;
+    }
+    if (consume("null"))
+      return v;
+    return parseNumber();
+  }
+  std::string parseString()
+  {
+    if (i_ >= s_.size() || s_[i_] != '"')
+      fail("expected a string");
+    ++i_;
+    std::string out;
+    while (i_ < s_.size() && s_[i_] != '"') {
+      const unsigned char c = static_cast<unsigned char>(s_[i_]);
+      if (c < 0x20)
+        fail("raw control character in a string");
+      if (c != '\\') {
+        out += s_[i_++];
+        continue;
+      }
+      ++i_;
+      if (i_ >= s_.size())
+        fail("bad escape");
+      const char e = s_[i_++];
+      switch (e) {
+      case '"':
+      case '\\':
+      case '/':
+        out += e;
+        break;
+      case 'b':
+        out += '\b';
+        break;
+      case 'f':
+        out += '\f';
+        break;
+      case 'n':
+        out += '\n';
+        break;
+      case 'r':
+        out += '\r';
+        break;
+      case 't':
+        out += '\t';
+        break;
+      case 'u': {
+        if (i_ + 4 > s_.size())
+          fail("bad \\u escape");
+        const unsigned long code = std::stoul(s_.substr(i_, 4), nullptr, 16);
+        i_ += 4;
+        if (code >= 0x80)
+          fail("test parser handles only ASCII \\u escapes");
+        out += static_cast<char>(code);
+        break;
+      }
+      default:
+        fail("bad escape");
+      }
+    }
+    if (i_ >= s_.size())
+      fail("unterminated string");
+    ++i_;
+    return out;
+  }
+  Json parseNumber()
+  {
+    const std::size_t start = i_;
+    const auto digits = [&]() {
+      const std::size_t from = i_;
+      while (i_ < s_.size() && std::isdigit(static_cast<unsigned char>(s_[i_])))
+        ++i_;
+      return i_ > from;
+    };
+    if (i_ < s_.size() && s_[i_] == '-')
+      ++i_;
+    if (i_ < s_.size() && s_[i_] == '0')
+      ++i_;
+    else if (!digits())
+      fail("bad value");
+    if (i_ < s_.size() && s_[i_] == '.') {
+      ++i_;
+      if (!digits())
+        fail("bad fraction");
+    }
+    if (i_ < s_.size() && (s_[i_] == 'e' || s_[i_] == 'E')) {
+      ++i_;
+      if (i_ < s_.size() && (s_[i_] == '+' || s_[i_] == '-'))
+        ++i_;
+      if (!digits())
+        fail("bad exponent");
+    }
+    Json v;
+    v.type = Json::Type::kNumber;
+    v.text = s_.substr(start, i_ - start);
+    v.number = std::stod(v.text);
+    return v;
+  }
+
+  const std::string& s_;
+  std::size_t i_ = 0;
+};
+
+Json
+parseJson(const std::string& s)
+{
+  return JsonParser(s).parseDocument();
+}
+
+// --- Brute force ---------------------------------------------------------------
+
+/** Arcs by definition: full BFS from every region, pair joined iff the geodesic
+ * distance between the regions is at most radius and the classes form a wanted pair. */
+Arcs
+bruteForceArcs(const VoxelBand& band,
+               const std::vector<std::uint32_t>& labels,
+               const std::vector<FeatureClass>& classes,
+               int radius)
+{
+  const auto rank = [](FeatureClass c) {
+    return c == kV ? 0 : c == kE ? 1 : c == kF ? 2 : -1;
+  };
+  Arcs arcs;
+  for (std::uint32_t a = 1; a <= classes.size(); ++a) {
+    std::vector<int> dist(band.size(), -1);
+    std::queue<CellId> queue;
+    for (std::size_t i = 0; i < band.size(); ++i)
+      if (labels[i] == a) {
+        dist[i] = 0;
+        queue.push(static_cast<CellId>(i));
+      }
+    while (!queue.empty()) {
+      const CellId c = queue.front();
+      queue.pop();
+      for (const CellId nb : band.neighbours(c))
+        if (nb != kNoCell && dist[static_cast<std::size_t>(nb)] < 0) {
+          dist[static_cast<std::size_t>(nb)] = dist[static_cast<std::size_t>(c)] + 1;
+          queue.push(nb);
+        }
+    }
+    for (std::uint32_t b = a + 1; b <= classes.size(); ++b) {
+      const int ra = rank(classes[a - 1]), rb = rank(classes[b - 1]);
+      if (ra < 0 || rb < 0 || ra == rb)
+        continue;
+      bool near = false;
+      for (std::size_t i = 0; i < band.size() && !near; ++i)
+        near = labels[i] == b && dist[i] >= 0 && dist[i] <= radius;
+      if (near)
+        arcs.emplace_back(a, b);
+    }
+  }
+  return arcs;
+}
+
+std::string
+jsonOf(const TopologyGraph& g, const GraphMetadata& meta = {})
+{
+  std::ostringstream s;
+  g.writeJson(s, meta);
+  return s.str();
+}
+
+std::string
+dotOf(const TopologyGraph& g)
+{
+  std::ostringstream s;
+  g.writeDot(s);
+  return s.str();
+}
+
+// --- Tests ---------------------------------------------------------------------
+
+TEST(TopologyGraph, StripArcsAndQueries)
+{
+  const Strip s;
+  const TopologyGraph g = buildGraph(s.band, s.labels, s.classes, 2);
+  ASSERT_EQ(g.size(), 4u);
+  EXPECT_EQ(g.arcs(), (Arcs{{1, 2}, {1, 4}, {2, 3}}));
+  EXPECT_EQ(g.arcCount(), 3u);
+  EXPECT_EQ(g.classCount(kV), 1u);
+  EXPECT_EQ(g.classCount(kE), 1u);
+  EXPECT_EQ(g.classCount(kF), 2u);
+  EXPECT_EQ(g.classCount(FeatureClass::kNone), 0u);
+  for (std::uint32_t id = 1; id <= 4; ++id) {
+    EXPECT_EQ(g.node(id).id, id);
+    EXPECT_EQ(g.node(id).feature_class, s.classes[id - 1]);
+  }
+  EXPECT_EQ(g.node(1).cells, 6u);
+  EXPECT_EQ(g.node(2).cells, 2u);
+  EXPECT_EQ(g.node(3).cells, 12u);
+  EXPECT_EQ(g.node(4).cells, 2u);
+  EXPECT_EQ(g.node(3).points, 12u);
+  EXPECT_EQ(g.neighbours(1), (Ids{2, 4}));
+  EXPECT_EQ(g.neighbours(2), (Ids{1, 3}));
+  EXPECT_EQ(g.neighbours(4), (Ids{1}));
+  EXPECT_EQ(g.neighbours(1, kE), (Ids{2}));
+  EXPECT_EQ(g.neighbours(1, kV), (Ids{4}));
+  EXPECT_EQ(g.neighbours(1, kF), Ids{});
+  EXPECT_EQ(g.edgesOfFace(1), (Ids{2}));
+  EXPECT_EQ(g.edgesOfFace(3), (Ids{2}));
+  EXPECT_EQ(g.facesOfEdge(2), (Ids{1, 3}));
+  EXPECT_EQ(g.verticesOfEdge(2), Ids{});
+  EXPECT_TRUE(g.adjacent(2, 1));
+  EXPECT_FALSE(g.adjacent(1, 3));
+
+  // V4 (x <= 3) reaches E2 (x = 10) at 7 steps, F3 (x = 12) at 9.
+  EXPECT_EQ(buildGraph(s.band, s.labels, s.classes, 6).arcs(),
+            (Arcs{{1, 2}, {1, 4}, {2, 3}}));
+  const TopologyGraph g7 = buildGraph(s.band, s.labels, s.classes, 7);
+  EXPECT_EQ(g7.arcs(), (Arcs{{1, 2}, {1, 4}, {2, 3}, {2, 4}}));
+  EXPECT_EQ(g7.verticesOfEdge(2), (Ids{4}));
+  EXPECT_EQ(buildGraph(s.band, s.labels, s.classes, 9).arcs(),
+            (Arcs{{1, 2}, {1, 4}, {2, 3}, {2, 4}, {3, 4}}));
+  // Radius 0 joins nothing; a huge radius joins every pair of different classes but
+  // never the two faces.
+  EXPECT_EQ(buildGraph(s.band, s.labels, s.classes, 0).arcCount(), 0u);
+  EXPECT_EQ(buildGraph(s.band, s.labels, s.classes, 1000).arcs(),
+            (Arcs{{1, 2}, {1, 4}, {2, 3}, {2, 4}, {3, 4}}));
+}
+
+TEST(TopologyGraph, SheetAllPairTypesNoSameClassArcs)
+{
+  const Sheet s;
+  const TopologyGraph g = buildGraph(s.band, s.labels, s.classes, 1);
+  ASSERT_EQ(g.size(), 6u);
+  EXPECT_EQ(g.arcs(), (Arcs{{1, 2}, {1, 4}, {1, 5}, {2, 3}, {2, 4}, {3, 4}, {3, 5}}));
+  EXPECT_EQ(g.verticesOfEdge(2), (Ids{4}));
+  EXPECT_EQ(g.facesOfEdge(2), (Ids{1, 3}));
+  EXPECT_EQ(g.neighbours(4), (Ids{1, 2, 3}));
+  EXPECT_EQ(g.neighbours(5), (Ids{1, 3}));
+  EXPECT_EQ(g.classCount(kV), 2u);
+  EXPECT_EQ(g.classCount(kE), 2u);
+  // The empty edge 6: a node without cells, points, geometry or arcs.
+  EXPECT_EQ(g.node(6).cells, 0u);
+  EXPECT_EQ(g.node(6).points, 0u);
+  EXPECT_TRUE(g.node(6).centroid.array().isNaN().all());
+  EXPECT_TRUE(g.neighbours(6).empty());
+  EXPECT_EQ(g.facesOfEdge(6), Ids{});
+
+  // V5 (x = 13) is 3 steps from E2 (ends at x = 10), through V4's cells.
+  EXPECT_FALSE(buildGraph(s.band, s.labels, s.classes, 2).adjacent(2, 5));
+  EXPECT_TRUE(buildGraph(s.band, s.labels, s.classes, 3).adjacent(2, 5));
+
+  for (int r : {1, 2, 3, 5, 20}) {
+    const TopologyGraph gr = buildGraph(s.band, s.labels, s.classes, r);
+    EXPECT_EQ(gr.arcs(), bruteForceArcs(s.band, s.labels, s.classes, r)) << r;
+    for (const auto& arc : gr.arcs())
+      EXPECT_NE(gr.node(arc.first).feature_class, gr.node(arc.second).feature_class);
+    EXPECT_FALSE(gr.adjacent(1, 3)) << "face-face arc at radius " << r;
+    EXPECT_FALSE(gr.adjacent(4, 5)) << "vertex-vertex arc at radius " << r;
+  }
+}
+
+TEST(TopologyGraph, GapNeedsRadiusAboveGap)
+{
+  // Raw-style strip: region A on x = 2..5, k unlabelled cells, region B after them.
+  // The last cell of A is at distance 0, the gap cells at 1..k, B's first cell at
+  // k + 1: joined iff dilation_radius >= k + 1.
+  const GridSpec grid = testGrid(64, 8, 8);
+  for (const int k : {0, 1, 2, 5, 16}) {
+    std::vector<CellCoord> cells;
+    for (int x = 2; x <= 5 + k + 4; ++x)
+      cells.emplace_back(x, 3, 3);
+    const VoxelBand band = bandOf(grid, cells);
+    const auto labels = labelBand(band, [&](const CellCoord& c) -> std::uint32_t {
+      if (c.x() <= 5)
+        return 1;
+      return c.x() <= 5 + k ? 0 : 2;
+    });
+    for (const auto& pair : std::vector<std::vector<FeatureClass>>{
+           {kV, kE}, {kE, kV}, {kE, kF}, {kF, kE}, {kV, kF}, {kF, kV}}) {
+      for (int r = 0; r <= k + 3; ++r) {
+        const TopologyGraph g = buildGraph(band, labels, pair, r);
+        EXPECT_EQ(g.arcCount(), r >= k + 1 ? 1u : 0u)
+          << "gap " << k << " radius " << r << " classes "
+          << TopologyGraph::className(pair[0]) << "-"
+          << TopologyGraph::className(pair[1]);
+      }
+    }
+    for (const auto& same : std::vector<std::vector<FeatureClass>>{
+           {kV, kV}, {kE, kE}, {kF, kF}, {kE, FeatureClass::kNone}})
+      EXPECT_EQ(buildGraph(band, labels, same, 1000).arcCount(), 0u);
+  }
+}
+
+TEST(TopologyGraph, DilationIsGeodesic)
+{
+  // Two rows y = 2 and y = 4 (no cells at y = 3) joined by a column at x = 10:
+  // E1 at (2..4, 2) and F2 at (2..4, 4) are 2 cells apart in space but 14 steps apart
+  // through the band: 4 -> 10 (6), up 2, 10 -> 4 (6).
+  std::vector<CellCoord> cells;
+  for (int x = 2; x <= 10; ++x) {
+    cells.emplace_back(x, 2, 2);
+    cells.emplace_back(x, 4, 2);
+  }
+  cells.emplace_back(10, 3, 2);
+  const VoxelBand band = bandOf(testGrid(), cells);
+  const auto labels = labelBand(band, [](const CellCoord& c) -> std::uint32_t {
+    if (c.x() > 4)
+      return 0;
+    return c.y() == 2 ? 1 : 2;
+  });
+  const std::vector<FeatureClass> classes{kE, kF};
+  EXPECT_EQ(buildGraph(band, labels, classes, 13).arcCount(), 0u);
+  EXPECT_EQ(buildGraph(band, labels, classes, 14).arcCount(), 1u);
+}
+
+TEST(TopologyGraph, HollowBoxTopology)
+{
+  // The surface of a box of cells, labelled by how many of its coordinates are on
+  // the box's extremes: 1 face, 2 edge, 3 vertex.
+  const visfeat_test::CellBand box = visfeat_test::hollowBox(10, 8, 5);
+  VoxelBand::Options options;
+  options.repair = false;
+  const VoxelBand band = VoxelBand::fromCells(box.grid, box.cells, options);
+  const Eigen::Vector3i lo(2, 3, 2), hi(12, 11, 7);
+  std::map<std::array<int, 3>, std::uint32_t> ids; // extremes signature -> label
+  std::vector<FeatureClass> classes;
+  std::vector<std::uint32_t> labels(band.size());
+  for (std::size_t i = 0; i < band.size(); ++i) {
+    const CellCoord& c = band.coord(static_cast<CellId>(i));
+    std::array<int, 3> sig{};
+    int extremes = 0;
+    for (int a = 0; a < 3; ++a) {
+      sig[static_cast<std::size_t>(a)] = c[a] == lo[a] ? -1 : c[a] == hi[a] ? 1 : 0;
+      extremes += sig[static_cast<std::size_t>(a)] != 0 ? 1 : 0;
+    }
+    ASSERT_GE(extremes, 1) << "cell inside the box";
+    auto it = ids.find(sig);
+    if (it == ids.end()) {
+      it = ids.emplace(sig, static_cast<std::uint32_t>(classes.size() + 1)).first;
+      classes.push_back(extremes == 1 ? kF : extremes == 2 ? kE : kV);
+    }
+    labels[i] = it->second;
+  }
+  ASSERT_EQ(classes.size(), 26u);
+
+  const TopologyGraph g1 = buildGraph(band, labels, classes, 1);
+  EXPECT_EQ(g1.classCount(kV), 8u);
+  EXPECT_EQ(g1.classCount(kE), 12u);
+  EXPECT_EQ(g1.classCount(kF), 6u);
+  EXPECT_EQ(g1.arcCount(), 48u); // 8 x 3 vertex-edge + 12 x 2 edge-face
+  for (std::uint32_t id = 1; id <= g1.size(); ++id) {
+    const FeatureClass cls = g1.node(id).feature_class;
+    if (cls == kE) {
+      EXPECT_EQ(g1.verticesOfEdge(id).size(), 2u) << id;
+      EXPECT_EQ(g1.facesOfEdge(id).size(), 2u) << id;
+    } else if (cls == kF) {
+      EXPECT_EQ(g1.edgesOfFace(id).size(), 4u) << id;
+      EXPECT_TRUE(g1.neighbours(id, kV).empty()) << id; // corners touch edges only
+    } else {
+      EXPECT_EQ(g1.neighbours(id, kE).size(), 3u) << id;
+    }
+  }
+  // Radius 2 adds the 8 x 3 vertex-face incidences (corner -> edge cell -> face).
+  const TopologyGraph g2 = buildGraph(band, labels, classes, 2);
+  EXPECT_EQ(g2.arcCount(), 72u);
+  for (std::uint32_t id = 1; id <= g2.size(); ++id) {
+    if (g2.node(id).feature_class == kV) {
+      EXPECT_EQ(g2.neighbours(id, kF).size(), 3u) << id;
+    }
+  }
+  // Radius 3 reaches through the corner into the third face: the documented limit.
+  EXPECT_GT(buildGraph(band, labels, classes, 3).arcCount(), 72u);
+  for (int r : {1, 2, 3, 4})
+    EXPECT_EQ(buildGraph(band, labels, classes, r).arcs(),
+              bruteForceArcs(band, labels, classes, r));
+
+  // Boost Graph algorithms run on graph(): the box is one connected piece.
+  std::vector<int> component(boost::num_vertices(g1.graph()));
+  EXPECT_EQ(boost::connected_components(g1.graph(), component.data()), 1);
+  EXPECT_EQ(g1.graph()[0].id, 1u);
+}
+
+TEST(TopologyGraph, RandomLabelsMatchBruteForce)
+{
+  // A sheet with holes, labelled by nearest seed (Chebyshev), with unlabelled seams of
+  // random width between regions; classes random.
+  std::mt19937_64 rng(20240611);
+  const GridSpec grid = testGrid(48, 48, 8);
+  std::vector<CellCoord> cells;
+  std::uniform_int_distribution<int> pct(0, 99);
+  for (int y = 1; y < 47; ++y)
+    for (int x = 1; x < 47; ++x)
+      if (pct(rng) >= 8)
+        cells.emplace_back(x, y, 3);
+  const VoxelBand band = bandOf(grid, cells);
+  std::uniform_int_distribution<int> coord(1, 46), cls(1, 3);
+  std::vector<Eigen::Vector2i> seeds;
+  std::vector<FeatureClass> classes;
+  for (int s = 0; s < 24; ++s) {
+    seeds.emplace_back(coord(rng), coord(rng));
+    classes.push_back(static_cast<FeatureClass>(cls(rng)));
+  }
+  classes.push_back(kE); // a label with no cells
+  const auto labels = labelBand(band, [&](const CellCoord& c) -> std::uint32_t {
+    std::vector<std::pair<int, std::uint32_t>> d;
+    for (std::size_t s = 0; s < seeds.size(); ++s)
+      d.emplace_back(
+        std::max(std::abs(c.x() - seeds[s].x()), std::abs(c.y() - seeds[s].y())),
+        static_cast<std::uint32_t>(s + 1));
+    std::sort(d.begin(), d.end());
+    // Seam: unlabelled where the two nearest seeds are nearly tied.
+    const int seam = static_cast<int>(d[0].second % 4);
+    return d[1].first - d[0].first < seam ? 0 : d[0].second;
+  });
+  std::size_t previous = 0;
+  for (int r : {0, 1, 2, 3, 6, 12}) {
+    const TopologyGraph g = buildGraph(band, labels, classes, r);
+    EXPECT_GE(g.arcCount(), previous); // monotone in the radius
+    previous = g.arcCount();
+    EXPECT_EQ(g.arcs(), bruteForceArcs(band, labels, classes, r)) << "radius " << r;
+    // Determinism: same input, same graph, same export.
+    const TopologyGraph again = buildGraph(band, labels, classes, r);
+    EXPECT_EQ(again.arcs(), g.arcs());
+    EXPECT_EQ(jsonOf(again), jsonOf(g));
+    EXPECT_EQ(dotOf(again), dotOf(g));
+  }
+  EXPECT_GE(buildGraph(band, labels, classes, 1).arcCount(), 5u);
+  EXPECT_GT(previous, buildGraph(band, labels, classes, 1).arcCount());
+}
+
+TEST(TopologyGraph, GeometryInWorldUnits)
+{
+  // Cells with various point counts: region 1 = (4,5,6) x3 points, (6,5,6) x1 point,
+  // (5,7,6) x0 points; region 2 = (10,2,3), (10,2,4), both without points.
+  const GridSpec grid = testGrid();
+  std::vector<visfeat::OccupiedCell> occupied(5);
+  const CellCoord coords[5] = {{4, 5, 6}, {6, 5, 6}, {5, 7, 6}, {10, 2, 3}, {10, 2, 4}};
+  const std::uint32_t counts[5] = {3, 1, 0, 0, 0};
+  for (int i = 0; i < 5; ++i) {
+    occupied[static_cast<std::size_t>(i)].coord = coords[i];
+    occupied[static_cast<std::size_t>(i)].point_count = counts[i];
+  }
+  VoxelBand::Options options;
+  options.repair = false;
+  const VoxelBand band = VoxelBand::build(grid, occupied, {}, options);
+  const auto labels = labelBand(
+    band, [](const CellCoord& c) -> std::uint32_t { return c.x() == 10 ? 2 : 1; });
+  const TopologyGraph g = buildGraph(band, labels, {kF, kE}, 2);
+
+  const GraphNode& n1 = g.node(1);
+  EXPECT_EQ(n1.cells, 3u);
+  EXPECT_EQ(n1.points, 4u);
+  // Weighted centre in cells: (3 * 4.5 + 1 * 6.5) / 4 = 5.0 in x, 5.5 in y, 6.5 in z.
+  const Eigen::Vector3d c1 = grid.origin + 0.5 * Eigen::Vector3d(5.0, 5.5, 6.5);
+  EXPECT_NEAR((n1.centroid - c1).norm(), 0.0, 1e-12) << n1.centroid.transpose();
+  EXPECT_NEAR((n1.min - (grid.origin + 0.5 * Eigen::Vector3d(4, 5, 6))).norm(), 0.0,
+              1e-12);
+  EXPECT_NEAR((n1.max - (grid.origin + 0.5 * Eigen::Vector3d(7, 8, 7))).norm(), 0.0,
+              1e-12);
+  EXPECT_NEAR(n1.min.x(), -1.5 + 2.0, 1e-12);
+  EXPECT_NEAR(n1.max.z(), 0.25 + 3.5, 1e-12);
+
+  // No points: the plain mean of the cell centres.
+  const GraphNode& n2 = g.node(2);
+  EXPECT_EQ(n2.points, 0u);
+  const Eigen::Vector3d c2 = grid.origin + 0.5 * Eigen::Vector3d(10.5, 2.5, 4.0);
+  EXPECT_NEAR((n2.centroid - c2).norm(), 0.0, 1e-12) << n2.centroid.transpose();
+  EXPECT_NEAR((n2.max - (grid.origin + 0.5 * Eigen::Vector3d(11, 3, 5))).norm(), 0.0,
+              1e-12);
+  EXPECT_EQ(g.arcCount(), 0u); // not connected through the band
+
+  TopologyGraph h = g;
+  h.setPointGeometry(2, 17, Eigen::Vector3d(1, 2, 3), Eigen::Vector3d(0, 1, 2),
+                     Eigen::Vector3d(2, 3, 4));
+  EXPECT_EQ(h.node(2).points, 17u);
+  EXPECT_EQ(h.node(2).centroid, Eigen::Vector3d(1, 2, 3));
+  EXPECT_EQ(h.node(2).min, Eigen::Vector3d(0, 1, 2));
+  EXPECT_EQ(h.node(2).max, Eigen::Vector3d(2, 3, 4));
+  EXPECT_EQ(h.node(2).cells, 2u); // unchanged
+  EXPECT_EQ(g.node(2).points, 0u);
+  EXPECT_THROW(h.setPointGeometry(3, 1, c1, c1, c1), visfeat::Error);
+  EXPECT_THROW(h.setPointGeometry(0, 1, c1, c1, c1), visfeat::Error);
+}
+
+TEST(TopologyGraph, ErrorsAndValidation)
+{
+  const Strip s;
+  TopologyGraphParameters p;
+  p.dilation_radius = -1;
+  EXPECT_THROW(TopologyGraph::build(s.band, s.labels, s.classes, p), visfeat::Error);
+  p.dilation_radius = 1001;
+  EXPECT_THROW(TopologyGraph::build(s.band, s.labels, s.classes, p), visfeat::Error);
+  p.dilation_radius = 1000;
+  EXPECT_NO_THROW(TopologyGraph::build(s.band, s.labels, s.classes, p));
+  p.dilation_radius = 2;
+  std::vector<std::uint32_t> short_labels(s.labels.begin(), s.labels.end() - 1);
+  EXPECT_THROW(TopologyGraph::build(s.band, short_labels, s.classes, p),
+               visfeat::Error);
+  std::vector<std::uint32_t> bad_labels = s.labels;
+  bad_labels[3] = 5;
+  EXPECT_THROW(TopologyGraph::build(s.band, bad_labels, s.classes, p), visfeat::Error);
+  std::vector<FeatureClass> bad_classes = s.classes;
+  bad_classes[1] = static_cast<FeatureClass>(7);
+  EXPECT_THROW(TopologyGraph::build(s.band, s.labels, bad_classes, p), visfeat::Error);
+
+  const TopologyGraph g = TopologyGraph::build(s.band, s.labels, s.classes, p);
+  EXPECT_THROW(g.node(0), visfeat::Error);
+  EXPECT_THROW(g.node(5), visfeat::Error);
+  EXPECT_THROW(g.neighbours(99), visfeat::Error);
+  EXPECT_THROW(g.neighbours(0, kE), visfeat::Error);
+  EXPECT_THROW(g.adjacent(1, 9), visfeat::Error);
+  EXPECT_THROW(g.edgesOfFace(2), visfeat::Error);    // an edge, not a face
+  EXPECT_THROW(g.verticesOfEdge(1), visfeat::Error); // a face
+  EXPECT_THROW(g.facesOfEdge(4), visfeat::Error);    // a vertex
+  EXPECT_THROW(g.edgesOfFace(42), visfeat::Error);
+  try {
+    g.node(5);
+  } catch (const visfeat::Error& e) {
+    EXPECT_NE(std::string(e.what()).find("5"), std::string::npos) << e.what();
+  }
+
+  // No regions at all: an empty graph.
+  const TopologyGraph empty =
+    TopologyGraph::build(s.band, std::vector<std::uint32_t>(s.band.size(), 0), {}, p);
+  EXPECT_TRUE(empty.empty());
+  EXPECT_EQ(empty.arcCount(), 0u);
+  const Json j = parseJson(jsonOf(empty));
+  EXPECT_TRUE(j["nodes"].items.empty());
+  EXPECT_TRUE(j["arcs"].items.empty());
+  EXPECT_NE(dotOf(empty).find("graph"), std::string::npos);
+}
+
+TEST(TopologyGraph, DotHasEveryNodeAndArc)
+{
+  const Sheet s;
+  const TopologyGraph g = buildGraph(s.band, s.labels, s.classes, 1);
+  const std::string dot = dotOf(g);
+  EXPECT_EQ(dot.rfind("graph ", 0), 0u) << dot;
+  EXPECT_EQ(dot.back(), '\n');
+  EXPECT_NE(dot.find("}\n"), std::string::npos);
+  EXPECT_NE(dot.find("  1 [label=\"F1\", shape=ellipse, fillcolor=yellow"),
+            std::string::npos)
+    << dot;
+  EXPECT_NE(dot.find("  2 [label=\"E2\", shape=box, fillcolor=orange"),
+            std::string::npos);
+  EXPECT_NE(dot.find("  4 [label=\"V4\", shape=circle, fillcolor=red"),
+            std::string::npos);
+  EXPECT_NE(dot.find("  6 [label=\"E6\""), std::string::npos);
+  EXPECT_NE(dot.find("cells=" + std::to_string(g.node(1).cells) + ", points="),
+            std::string::npos);
+  std::size_t arc_lines = 0;
+  for (std::size_t at = dot.find(" -- "); at != std::string::npos;
+       at = dot.find(" -- ", at + 1))
+    ++arc_lines;
+  EXPECT_EQ(arc_lines, g.arcCount());
+  for (const auto& arc : g.arcs())
+    EXPECT_NE(dot.find("  " + std::to_string(arc.first) + " -- " +
+                       std::to_string(arc.second) + ";\n"),
+              std::string::npos);
+}
+
+TEST(TopologyGraph, JsonParsesAndHoldsTheGraph)
+{
+  const Sheet s;
+  const TopologyGraph g = buildGraph(s.band, s.labels, s.classes, 1);
+  GraphMetadata meta;
+  meta.grid = s.grid;
+  meta.source = "C:\\scans\\\"part\" 1.pcd\n\ttab\x01";
+  meta.parameters = {{"resolution", "256"}, {"opacity", "-0.5"}, {"tiny", "1e-3"},
+                     {"raw", "false"},      {"repair", "true"},  {"name", "abc"},
+                     {"octal", "016"},      {"nan", "nan"},      {"empty", ""},
+                     {"quote\"key", "2."}};
+  const std::string text = jsonOf(g, meta);
+  Json j;
+  ASSERT_NO_THROW(j = parseJson(text)) << text;
+  EXPECT_EQ(j["format"].text, "visfeat-topology-graph");
+  EXPECT_EQ(j["version"].number, 1.0);
+  EXPECT_EQ(j["source"].text, meta.source);
+  EXPECT_EQ(j["grid"]["origin"].items.size(), 3u);
+  EXPECT_EQ(j["grid"]["origin"].items[0].number, -1.5);
+  EXPECT_EQ(j["grid"]["origin"].items[2].number, 0.25);
+  EXPECT_EQ(j["grid"]["cell_size"].number, 0.5);
+  EXPECT_EQ(j["grid"]["dims"].items[1].number, 16.0);
+
+  const Json& params = j["parameters"];
+  EXPECT_EQ(params["resolution"].type, Json::Type::kNumber);
+  EXPECT_EQ(params["resolution"].number, 256.0);
+  EXPECT_EQ(params["opacity"].number, -0.5);
+  EXPECT_EQ(params["tiny"].number, 1e-3);
+  EXPECT_EQ(params["raw"].type, Json::Type::kBool);
+  EXPECT_FALSE(params["raw"].boolean);
+  EXPECT_TRUE(params["repair"].boolean);
+  EXPECT_EQ(params["name"].type, Json::Type::kString);
+  EXPECT_EQ(params["octal"].type, Json::Type::kString);
+  EXPECT_EQ(params["octal"].text, "016");
+  EXPECT_EQ(params["nan"].type, Json::Type::kString);
+  EXPECT_EQ(params["empty"].type, Json::Type::kString);
+  EXPECT_EQ(params["quote\"key"].type, Json::Type::kString);
+
+  EXPECT_EQ(j["counts"]["vertices"].number, 2.0);
+  EXPECT_EQ(j["counts"]["edges"].number, 2.0);
+  EXPECT_EQ(j["counts"]["faces"].number, 2.0);
+  EXPECT_EQ(j["counts"]["arcs"].number, static_cast<double>(g.arcCount()));
+
+  const Json& nodes = j["nodes"];
+  ASSERT_EQ(nodes.items.size(), g.size());
+  for (std::uint32_t id = 1; id <= g.size(); ++id) {
+    const Json& n = nodes.items[id - 1];
+    const visfeat::GraphNode& node = g.node(id);
+    EXPECT_EQ(n["id"].number, static_cast<double>(id));
+    EXPECT_EQ(n["class"].text, TopologyGraph::className(node.feature_class));
+    EXPECT_EQ(n["cells"].number, static_cast<double>(node.cells));
+    EXPECT_EQ(n["points"].number, static_cast<double>(node.points));
+    for (const char* key : {"centroid", "min", "max"}) {
+      ASSERT_EQ(n[key].items.size(), 3u);
+      const Eigen::Vector3d& v = std::string(key) == "centroid" ? node.centroid
+                                 : std::string(key) == "min"    ? node.min
+                                                                : node.max;
+      for (int a = 0; a < 3; ++a) {
+        const Json& x = n[key].items[static_cast<std::size_t>(a)];
+        if (std::isnan(v[a])) {
+          EXPECT_EQ(x.type, Json::Type::kNull);
+        } else { // exact round trip
+          EXPECT_EQ(x.number, v[a]) << key;
+        }
+      }
+    }
+  }
+  EXPECT_EQ(nodes.items[5]["centroid"].items[0].type, Json::Type::kNull);
+  EXPECT_EQ(nodes.items[0]["class"].text, "face");
+  EXPECT_EQ(nodes.items[1]["class"].text, "edge");
+  EXPECT_EQ(nodes.items[3]["class"].text, "vertex");
+
+  const Json& arcs = j["arcs"];
+  ASSERT_EQ(arcs.items.size(), g.arcCount());
+  const Arcs expected = g.arcs();
+  for (std::size_t i = 0; i < expected.size(); ++i) {
+    ASSERT_EQ(arcs.items[i].items.size(), 2u);
+    EXPECT_EQ(arcs.items[i].items[0].number, expected[i].first);
+    EXPECT_EQ(arcs.items[i].items[1].number, expected[i].second);
+  }
+
+  // Doubles that need 17 digits, infinities and a stream locale do not break it.
+  TopologyGraph h = g;
+  h.setPointGeometry(1, 5, Eigen::Vector3d(0.1, 1.0 / 3.0, -2.5e-300),
+                     Eigen::Vector3d(-std::numeric_limits<double>::infinity(), 0, 0),
+                     Eigen::Vector3d(1e300, 0, 0));
+  GraphMetadata odd;
+  odd.grid.cell_size = std::numeric_limits<double>::quiet_NaN();
+  const Json k = parseJson(jsonOf(h, odd));
+  EXPECT_EQ(k["nodes"].items[0]["centroid"].items[0].number, 0.1);
+  EXPECT_EQ(k["nodes"].items[0]["centroid"].items[1].number, 1.0 / 3.0);
+  EXPECT_EQ(k["nodes"].items[0]["centroid"].items[2].number, -2.5e-300);
+  EXPECT_EQ(k["nodes"].items[0]["min"].items[0].type, Json::Type::kNull);
+  EXPECT_EQ(k["nodes"].items[0]["max"].items[0].number, 1e300);
+  EXPECT_EQ(k["grid"]["cell_size"].type, Json::Type::kNull);
+  EXPECT_EQ(k["source"].text, "");
+  EXPECT_TRUE(k["parameters"].members.empty());
+}
+
+TEST(TopologyGraph, WriteFileByExtension)
+{
+  const Sheet s;
+  const TopologyGraph g = buildGraph(s.band, s.labels, s.classes, 1);
+  GraphMetadata meta;
+  meta.grid = s.grid;
+  meta.source = "sheet";
+  namespace fs = std::filesystem;
+  const fs::path dir =
+    fs::temp_directory_path() /
+    ("visfeat_topology_graph_test_" + std::to_string(std::random_device{}()));
+  fs::create_directories(dir);
+  const auto slurp = [](const fs::path& p) {
+    std::ifstream in(p);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+  };
+  for (const char* name : {"g.json", "g.JSON", "g.dot", "g.Gv", "a.b/../g2.DOT"}) {
+    const fs::path p = dir / name;
+    if (p.has_parent_path())
+      fs::create_directories(p.parent_path());
+    EXPECT_TRUE(g.writeFile(p.string(), meta)) << name;
+    const std::string text = slurp(p);
+    const std::string ext = p.extension().string();
+    if (ext == ".json" || ext == ".JSON")
+      EXPECT_EQ(text, jsonOf(g, meta)) << name;
+    else
+      EXPECT_EQ(text, dotOf(g)) << name;
+  }
+  for (const char* name : {"g.txt", "g", "g.json.bak", "dir.json/g", "g.dott"})
+    EXPECT_THROW(g.writeFile((dir / name).string(), meta), visfeat::Error) << name;
+  EXPECT_FALSE(fs::exists(dir / "g.txt"));
+  EXPECT_THROW(g.writeFile((dir / "missing" / "sub" / "g.json").string(), meta),
+               visfeat::Error);
+  EXPECT_THROW(g.writeFile(dir.string() + "/", meta), visfeat::Error);
+  fs::remove_all(dir);
+}
+
+} // namespace
