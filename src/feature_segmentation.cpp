@@ -6,9 +6,9 @@
 #include <functional>
 #include <iterator>
 #include <limits>
-#include <queue>
 #include <map>
 #include <numeric>
+#include <queue>
 #include <set>
 #include <sstream>
 
@@ -80,9 +80,9 @@ contactsOf(const VoxelBand& band,
 }
 
 /** Edge and vertex regions end where the watershed met the faces, in the valleys 3-4
-  * cells out. Keep only their skeleton (core cells, plus a ridge-following path from
-  * each vertex core to the cores of the edges it touches, so edges reach their
-  * vertices) widened by `width` cells; the rest goes to the nearest face region. */
+ * cells out. Keep only their skeleton (core cells, plus a ridge-following path from
+ * each vertex core to the cores of the edges it touches, so edges reach their
+ * vertices) widened by `width` cells; the rest goes to the nearest face region. */
 void
 thinFeatureRegions(const VoxelBand& band,
                    const VisibilityMap& map,
@@ -192,7 +192,8 @@ thinFeatureRegions(const VoxelBand& band,
     for (const CellId nb : band.neighbours(queue[head]))
       if (nb != kNoCell && labels[static_cast<std::size_t>(nb)] == 0 &&
           original[static_cast<std::size_t>(nb)] != 0) {
-        labels[static_cast<std::size_t>(nb)] = labels[static_cast<std::size_t>(queue[head])];
+        labels[static_cast<std::size_t>(nb)] =
+          labels[static_cast<std::size_t>(queue[head])];
         queue.push_back(nb);
       }
   for (std::size_t c = 0; c < n; ++c) // enclosed cells no face reaches keep their label
@@ -349,6 +350,17 @@ FeatureSegmentation::compute(const VoxelBand& band,
       if (face_count[l] >= 3 || faces_met >= 3 || met.size() >= 2)
         vertices.push_back(l);
     }
+    // A corner often holds several small cores (the blob at the tip, ridge specks);
+    // the test may pass for one a few cells off and fail for the tip itself, so an
+    // accepted vertex takes every small core within its reach.
+    {
+      std::set<std::uint32_t> absorbed(vertices.begin(), vertices.end());
+      for (const std::uint32_t l : std::vector<std::uint32_t>(vertices))
+        for (const std::uint32_t m : reached[l])
+          if (cls[m] != FeatureClass::kFace && cores[m - 1].cells <= vertex_max &&
+              absorbed.insert(m).second)
+            vertices.push_back(m);
+    }
     for (const std::uint32_t l : vertices) {
       cls[l] = FeatureClass::kVertex;
       signature.erase(l);
@@ -374,10 +386,11 @@ FeatureSegmentation::compute(const VoxelBand& band,
     for (bool changed = true; changed;) {
       changed = false;
       const Contacts around = contactsOf(band, labels, sets);
-      std::map<std::uint32_t, std::pair<std::uint32_t, std::uint32_t>> best; // contact, to
+      std::map<std::uint32_t, std::pair<std::uint32_t, std::uint32_t>>
+        best; // contact, to
       for (const auto& [pair, count] : around)
-        if (cls[pair.first] == FeatureClass::kNone && cls[pair.second] != FeatureClass::kNone &&
-            count > best[pair.first].first)
+        if (cls[pair.first] == FeatureClass::kNone &&
+            cls[pair.second] != FeatureClass::kNone && count > best[pair.first].first)
           best[pair.first] = {count, pair.second};
       for (const auto& [root, target] : best) {
         sets.attach(target.second, root);
@@ -389,6 +402,10 @@ FeatureSegmentation::compute(const VoxelBand& band,
         cls[l] = cls[sets.find(l)];
 
     // 4. Fragments: touching edges with the same pair of faces, touching vertices.
+    std::map<std::uint32_t, std::set<std::uint32_t>> edge_reach;
+    for (const auto& [l, own] : signature)
+      if (cls[l] == FeatureClass::kEdge && !core_cells[l].empty())
+        edge_reach[l] = dilate(l, core_cells[l]);
     for (bool changed = true; changed;) {
       changed = false;
       contacts = contactsOf(band, labels, sets);
@@ -403,6 +420,36 @@ FeatureSegmentation::compute(const VoxelBand& band,
           changed = true;
         }
       }
+      // Pieces of one edge with something else between them (a speck merged into a
+      // face, a vertex): same pair of faces, within vertex_reach cells of each other.
+      for (const auto& [a0, near] : edge_reach)
+        for (const std::uint32_t b0 : near) {
+          const std::uint32_t a = sets.find(a0), b = sets.find(b0);
+          if (a != b && cls[a] == FeatureClass::kEdge &&
+              cls[b] == FeatureClass::kEdge && signature.count(a) &&
+              signature.count(b) && signature[a] == signature[b]) {
+            sets.join(a, b);
+            changed = true;
+          }
+        }
+      // Pieces of one edge that a vertex region sits between: same pair of faces,
+      // both touching the same vertex. (Two faces may meet along several edges, e.g. a
+      // half-cylinder on a plane, but those do not share a vertex.)
+      std::map<std::uint32_t, std::vector<std::uint32_t>> edges_at;
+      for (const auto& [pair, count] : contacts)
+        if (cls[pair.first] == FeatureClass::kVertex &&
+            cls[pair.second] == FeatureClass::kEdge)
+          edges_at[pair.first].push_back(pair.second);
+      for (const auto& [vertex, edges] : edges_at)
+        for (std::size_t i = 0; i < edges.size(); ++i)
+          for (std::size_t j = i + 1; j < edges.size(); ++j) {
+            const std::uint32_t a = sets.find(edges[i]), b = sets.find(edges[j]);
+            if (a != b && signature.count(a) && signature.count(b) &&
+                signature[a] == signature[b]) {
+              sets.join(a, b);
+              changed = true;
+            }
+          }
     }
     // 5. Two corners share at most one edge: vertex candidates whose reached edges
     // share two or more mark the same corner.
