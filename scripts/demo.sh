@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
-# End-to-end demo: builds visfeat (Release, build/), generates a sample cloud of an
-# icosahedron, labels its sharp features, and tells how to look at the result.
+# End-to-end demo: builds visfeat (Release, build/), generates a sample cloud of a box
+# with a cylindrical through-hole (8 corners, 12 straight and 2 circular edges, 7
+# faces), labels its vertices, edges and faces, writes the topology graph, and tells
+# how to look at the result.
 #   scripts/demo.sh [OUTPUT_DIR]     (default: demo_output)
 set -euo pipefail
 
@@ -9,7 +11,8 @@ cd "$root"
 
 out="${1:-demo_output}"
 build_dir="${BUILD_DIR:-build}"
-resolution=128
+resolution=256
+model=box_with_hole
 
 bash "$root/scripts/install_deps.sh"
 
@@ -21,25 +24,31 @@ cmake --build "$build_dir" -j"$(nproc 2>/dev/null || echo 2)" \
 
 mkdir -p "$out"
 echo "== generate a sample cloud"
-"$build_dir/tools/visfeat_generate" icosahedron "$out/icosahedron.pcd" \
-  -resolution "$resolution" -seed 1
+"$build_dir/tools/visfeat_generate" "$model" "$out/$model.pcd" \
+  -resolution "$resolution" -seed 1 -truth "$out/${model}_truth.json"
 echo "== label sharp features"
-"$build_dir/tools/visfeat" "$out/icosahedron.pcd" "$out/icosahedron_labeled.pcd" \
-  -resolution "$resolution" -voxels "$out/icosahedron_cells.pcd"
+"$build_dir/tools/visfeat" "$out/$model.pcd" "$out/${model}_labeled.pcd" \
+  -resolution "$resolution" -voxels "$out/${model}_cells.pcd" \
+  -graph "$out/${model}_graph.json"
+"$build_dir/tools/visfeat" "$out/$model.pcd" "$out/${model}_labeled.pcd" \
+  -resolution "$resolution" -graph "$out/${model}_graph.dot" -q
 
 cat <<MSG
 
 Outputs:
-  $out/icosahedron.pcd           input cloud (sampled icosahedron)
-  $out/icosahedron_labeled.pcd   per point: visibility_radius, label, feature_class
-  $out/icosahedron_cells.pcd     one point per voxel-band cell, same fields
+  $out/$model.pcd             input cloud (x y z, curve_distance = distance to the
+                                  true sharp curves, face_id), truth in ${model}_truth.json
+  $out/${model}_labeled.pcd   per point: visibility_radius, label (region id),
+                                  feature_class (1 vertex, 2 edge, 3 face)
+  $out/${model}_cells.pcd     one point per voxel-band cell, same fields
+  $out/${model}_graph.json    topology graph (regions, arcs, grid, parameters)
+  $out/${model}_graph.dot     the same graph for GraphViz (dot -Tpng)
 
 View them with:
-  pcl_viewer $out/icosahedron_labeled.pcd
-    pcl_viewer colours by the 'label' field (one colour per component) by default;
-    components are not computed yet, so colour by visibility_radius instead:
+  pcl_viewer $out/${model}_labeled.pcd
+    pcl_viewer colours by the 'label' field (one colour per region) by default;
     keys: l lists the colour handlers (one per field), 0-9 switches between them
-    (e.g. visibility_radius, feature_class), +/- changes the point size,
+    (e.g. feature_class, visibility_radius), +/- changes the point size,
     r resets the camera, j saves a PNG snapshot, h prints help, q quits.
-  pcl_viewer $out/icosahedron_cells.pcd
+  pcl_viewer $out/${model}_cells.pcd
 MSG
