@@ -5,6 +5,7 @@
 
 #include <pcl/PCLPointCloud2.h>
 #include <pcl/common/io.h>
+#include <pcl/console/parse.h>
 #include <pcl/console/print.h>
 #include <pcl/conversions.h>
 #include <pcl/io/pcd_io.h>
@@ -24,6 +25,7 @@
 #include <fstream>
 #include <limits>
 #include <map>
+#include <new>
 #include <set>
 #include <sstream>
 #include <string>
@@ -215,6 +217,37 @@ inline void
 printError(const std::string& program, const std::string& message)
 {
   pcl::console::print_error("%s: error: %s\n", program.c_str(), message.c_str());
+}
+
+/** \brief The shared main() of the tools: -h / --help print the help (exit 0), no
+ * argument at all prints it too (exit 1) when `arguments_required`, and any exception
+ * escaping `run` becomes one error line and exit code 1, never a crash. */
+template <typename Help, typename Run>
+int
+toolMain(int argc,
+         char** argv,
+         const std::string& program,
+         bool arguments_required,
+         Help&& print_help,
+         Run&& run)
+{
+  if (arguments_required && argc < 2) {
+    print_help(argv[0]);
+    return 1;
+  }
+  if (pcl::console::find_switch(argc, argv, "-h") ||
+      pcl::console::find_switch(argc, argv, "--help")) {
+    print_help(argv[0]);
+    return 0;
+  }
+  try {
+    return run(argc, argv);
+  } catch (const std::bad_alloc&) {
+    printError(program, "out of memory");
+  } catch (const std::exception& e) {
+    printError(program, e.what());
+  }
+  return 1;
 }
 
 /** \brief The temporary name an output is written to before being renamed into place.

@@ -499,15 +499,5 @@ run(int argc, char** argv)
 int
 main(int argc, char** argv)
 {
-  if (find_switch(argc, argv, "-h") || find_switch(argc, argv, "--help")) {
-    printHelp(argv[0]);
-    return 0;
-  }
-  try {
-    return run(argc, argv);
-  } catch (const std::bad_alloc&) {
-    return fail("out of memory");
-  } catch (const std::exception& e) {
-    return fail(e.what());
-  }
+  return vt::toolMain(argc, argv, kProgram, false, printHelp, run);
 }

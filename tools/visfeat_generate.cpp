@@ -302,19 +302,5 @@ run(int argc, char** argv)
 int
 main(int argc, char** argv)
 {
-  if (argc < 2) {
-    printHelp(argv[0]);
-    return 1;
-  }
-  if (find_switch(argc, argv, "-h") || find_switch(argc, argv, "--help")) {
-    printHelp(argv[0]);
-    return 0;
-  }
-  try {
-    return run(argc, argv);
-  } catch (const std::bad_alloc&) {
-    return fail("out of memory");
-  } catch (const std::exception& e) {
-    return fail(e.what());
-  }
+  return vt::toolMain(argc, argv, kProgram, true, printHelp, run);
 }
