@@ -83,7 +83,7 @@ contactsOf(const VoxelBand& band,
  * cells out. Keep only their skeleton (core cells, plus a ridge-following path from
  * each vertex core to the cores of the edges it touches, so edges reach their
  * vertices) widened by `width` cells; the rest goes to the nearest face region. */
-void
+std::vector<char>
 thinFeatureRegions(const VoxelBand& band,
                    const VisibilityMap& map,
                    const std::vector<std::uint32_t>& core_labels,
@@ -199,6 +199,7 @@ thinFeatureRegions(const VoxelBand& band,
   for (std::size_t c = 0; c < n; ++c) // enclosed cells no face reaches keep their label
     if (labels[c] == 0)
       labels[c] = original[c];
+  return skeleton;
 }
 
 } // namespace
@@ -207,6 +208,12 @@ void
 FeatureSegmentation::validate(const SegmentationParameters& p, int max_radius)
 {
   ComponentSet::validate(p.components, max_radius);
+  if (!(p.point_feature_distance >= 0.0 && p.point_feature_distance <= 10.0)) {
+    std::ostringstream msg;
+    msg << "point_feature_distance " << p.point_feature_distance
+        << " is out of range [0, 10] (cells)";
+    throw Error(msg.str());
+  }
   if (p.min_piece_cells < 0 || p.min_piece_cells > 1000000) {
     std::ostringstream msg;
     msg << "min_piece_cells " << p.min_piece_cells
@@ -479,8 +486,9 @@ FeatureSegmentation::compute(const VoxelBand& band,
         labels[c] = 0;
     }
     if (parameters.complete_regions)
-      thinFeatureRegions(band, map, result.cores_.cellLabels(), speck, cls,
-                         parameters.feature_width, labels);
+      result.skeleton_ =
+        thinFeatureRegions(band, map, result.cores_.cellLabels(), speck, cls,
+                           parameters.feature_width, labels);
   }
 
   // Renumber 1.. by smallest cell id.

@@ -69,6 +69,27 @@ caseName(const testing::TestParamInfo<Case>& info)
   return std::string(info.param.model) + "_seed" + std::to_string(info.param.seed);
 }
 
+// At least 95% of the points labeled edge or vertex lie within 2 cells of a true sharp
+// curve; at least 90% of the points within 1 cell of one are labeled edge or vertex.
+void
+expectFeaturePointsHugTheTrueCurves(const PipelineRun& run)
+{
+  std::size_t labeled = 0, labeled_near = 0, near = 0, near_labeled = 0;
+  for (std::size_t i = 0; i < run.output.size(); ++i) {
+    const auto cls = static_cast<FeatureClass>(run.output[i].feature_class);
+    const bool feature = cls == FeatureClass::kEdge || cls == FeatureClass::kVertex;
+    const double d = run.samples.curve_distance[i] / run.cell;
+    labeled += feature;
+    labeled_near += feature && d <= 2.0;
+    near += d <= 1.0;
+    near_labeled += feature && d <= 1.0;
+  }
+  ASSERT_GT(labeled, 0u);
+  ASSERT_GT(near, 0u);
+  EXPECT_GE(double(labeled_near) / double(labeled), 0.95) << "precision (2 cells)";
+  EXPECT_GE(double(near_labeled) / double(near), 0.90) << "recall (1 cell)";
+}
+
 class ExactTopology : public testing::TestWithParam<Case>
 {};
 
@@ -141,6 +162,12 @@ TEST_P(ExactTopology, CountsMatchTheTruth)
     EXPECT_EQ(run.graph.verticesOfEdge(region_of_curve[static_cast<int>(c)]), expected)
       << "vertices of the region of true curve " << c;
   }
+
+  // Complete regions hug the curves. Not yet on the icosahedron: its 138-degree edges
+  // give cores ~4 cells wide (precision 0.87, recall 0.85 measured), tracked in the
+  // components issue.
+  if (std::string(GetParam().model) != "icosahedron")
+    expectFeaturePointsHugTheTrueCurves(run);
 }
 
 // Every generated model under three random rotations (20 of the 21 cases): exact
@@ -170,38 +197,6 @@ INSTANTIATE_TEST_SUITE_P(Models,
                                          Case{"cylinder", 1},
                                          Case{"cylinder", 2},
                                          Case{"cylinder", 3}),
-                         caseName);
-
-class RegionAccuracy : public testing::TestWithParam<Case>
-{};
-
-// At least 95% of the points labeled edge or vertex lie within 2 cells of a true sharp
-// curve; at least 90% of the points within 1 cell of one are labeled edge or vertex.
-TEST_P(RegionAccuracy, FeaturePointsHugTheTrueCurves)
-{
-  const PipelineRun run = runPipeline(GetParam().model, GetParam().seed);
-  std::size_t labeled = 0, labeled_near = 0, near = 0, near_labeled = 0;
-  for (std::size_t i = 0; i < run.output.size(); ++i) {
-    const auto cls = static_cast<FeatureClass>(run.output[i].feature_class);
-    const bool feature = cls == FeatureClass::kEdge || cls == FeatureClass::kVertex;
-    const double d = run.samples.curve_distance[i] / run.cell;
-    labeled += feature;
-    labeled_near += feature && d <= 2.0;
-    near += d <= 1.0;
-    near_labeled += feature && d <= 1.0;
-  }
-  ASSERT_GT(labeled, 0u);
-  ASSERT_GT(near, 0u);
-  EXPECT_GE(double(labeled_near) / double(labeled), 0.95);
-  EXPECT_GE(double(near_labeled) / double(near), 0.90);
-}
-
-INSTANTIATE_TEST_SUITE_P(Models,
-                         RegionAccuracy,
-                         testing::Values(Case{"cube", 1},
-                                         Case{"u_prism", 2},
-                                         Case{"box_with_hole", 3},
-                                         Case{"cylinder", 1}),
                          caseName);
 
 TEST(RawMode, KeepsThePapersLiteralComponents)

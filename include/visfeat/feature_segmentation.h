@@ -31,10 +31,16 @@ struct SegmentationParameters
    * min_radius; it must stay below the shortest edge length. Default 24. */
   int vertex_reach = 24;
   /** \brief Complete regions: edge and vertex regions keep the cells within this many
-    * 6-steps of their skeleton (their core cells and the ridge paths that join each
-    * edge to its vertices); the rest of their watershed basin goes to the nearest face.
-    * Cores lie within about 1.5 cells of the true curve. Default 1 cell. */
+   * 6-steps of their skeleton (their core cells and the ridge paths that join each
+   * edge to its vertices); the rest of their watershed basin goes to the nearest face.
+   * Cores lie within about 1.5 cells of the true curve. Default 1 cell. */
   int feature_width = 1;
+  /** \brief Per point (the PCL front class): a point in a widened edge or vertex cell
+   * (not on the skeleton) stays edge/vertex only when it lies within this distance,
+   * in cells, of the centre of a skeleton cell of its region; otherwise it joins the
+   * nearest face cell around it. Cells are coarser than the points: this keeps
+   * feature points within about this distance of the curve. 0 = off. Default 1.0. */
+  double point_feature_distance = 1.0;
 };
 
 /** \brief A final region: a vertex, an edge or a face of the object. */
@@ -87,6 +93,10 @@ public:
     return label == 0 ? FeatureClass::kNone : regions_[label - 1].feature_class;
   }
 
+  /** \brief Per cell, 1 if it is on the skeleton of an edge or vertex region (its
+   * core cells and the ridge paths to its vertices); empty unless complete regions. */
+  const std::vector<char>& skeleton() const { return skeleton_; }
+
   /** \brief The cores the regions grew from. */
   const ComponentSet& cores() const { return cores_; }
 
@@ -97,6 +107,7 @@ private:
   ComponentSet cores_;
   std::vector<std::uint32_t> labels_;
   std::vector<Region> regions_;
+  std::vector<char> skeleton_;
 };
 
 } // namespace visfeat

@@ -211,6 +211,11 @@ protected:
   void computeFeature(PointCloudOut& output) override;
 
 private:
+  void refinePointLabel(const PointInT& p,
+                        CellId cell,
+                        std::uint32_t& label,
+                        FeatureClass& cls) const;
+
   void buildGraph(const PointCloudOut& output);
 
   bool fail(const std::string& message);

@@ -84,6 +84,45 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::initCompute()
 
 template <typename PointInT, typename PointOutT>
 void
+VisibilityFeatureEstimation<PointInT, PointOutT>::refinePointLabel(
+  const PointInT& p, CellId cell, std::uint32_t& label, FeatureClass& cls) const
+{
+  // A widened edge/vertex cell spans points up to ~2 cells from the curve: keep a point
+  // only near the skeleton, else give it to the closest face cell around it.
+  const std::vector<char>& skeleton = segmentation_.skeleton();
+  const double limit = segmentation_parameters_.point_feature_distance;
+  if (limit <= 0.0 || skeleton.empty() || skeleton[static_cast<std::size_t>(cell)] ||
+      (cls != FeatureClass::kEdge && cls != FeatureClass::kVertex))
+    return;
+  const GridSpec& grid = band_.grid();
+  const Eigen::Vector3d q(p.x, p.y, p.z);
+  const CellCoord c = band_.coord(cell);
+  double near_skeleton = std::numeric_limits<double>::infinity();
+  double near_face = std::numeric_limits<double>::infinity();
+  std::uint32_t face = 0;
+  for (int dz = -1; dz <= 1; ++dz)
+    for (int dy = -1; dy <= 1; ++dy)
+      for (int dx = -1; dx <= 1; ++dx) {
+        const CellId n = band_.find(c + CellCoord(dx, dy, dz));
+        if (n == kNoCell)
+          continue;
+        const double d = (grid.cellCenter(band_.coord(n)) - q).norm() / grid.cell_size;
+        const std::uint32_t l = segmentation_.cellLabels()[static_cast<std::size_t>(n)];
+        if (skeleton[static_cast<std::size_t>(n)] && l == label)
+          near_skeleton = std::min(near_skeleton, d);
+        if (segmentation_.cellClass(n) == FeatureClass::kFace && d < near_face) {
+          near_face = d;
+          face = l;
+        }
+      }
+  if (near_skeleton > limit && face != 0) {
+    label = face;
+    cls = FeatureClass::kFace;
+  }
+}
+
+template <typename PointInT, typename PointOutT>
+void
 VisibilityFeatureEstimation<PointInT, PointOutT>::buildGraph(
   const PointCloudOut& output)
 {
@@ -178,11 +217,15 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::computeFeature(PointCloudOut& 
       const CellId cell = pcl::isXYZFinite(p) ? cellOf(index, p) : kNoCell;
       out.visibility_radius =
         cell == kNoCell ? nan : static_cast<float>(map_.radius(cell));
-      out.label = cell == kNoCell
-                    ? 0u
-                    : segmentation_.cellLabels()[static_cast<std::size_t>(cell)];
-      out.feature_class = static_cast<std::uint8_t>(
-        cell == kNoCell ? FeatureClass::kNone : segmentation_.cellClass(cell));
+      std::uint32_t label =
+        cell == kNoCell ? 0u
+                        : segmentation_.cellLabels()[static_cast<std::size_t>(cell)];
+      FeatureClass cls =
+        cell == kNoCell ? FeatureClass::kNone : segmentation_.cellClass(cell);
+      if (cell != kNoCell)
+        refinePointLabel(p, cell, label, cls);
+      out.label = label;
+      out.feature_class = static_cast<std::uint8_t>(cls);
       dense = dense && cell != kNoCell;
     }
     output.is_dense = dense;
