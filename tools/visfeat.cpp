@@ -477,6 +477,8 @@ run(int argc, char** argv)
   print_value("%.1f", times.segmentation_ms);
   print_info(" ms, output ");
   print_value("%.1f", times.output_ms);
+  print_info(" ms, graph ");
+  print_value("%.1f", times.graph_ms);
   print_info(" ms; total ");
   print_value("%.1f", times.total());
   print_info(" ms\n");
