@@ -195,6 +195,11 @@ TopologyGraph::validate(const TopologyGraphParameters& p)
         << TopologyGraphParameters::kMaxDilationRadius << "] (cells)";
     throw Error(msg.str());
   }
+  if (!(p.min_face_contact >= 0.0 && p.min_face_contact <= 1.0)) {
+    std::ostringstream msg;
+    msg << "min_face_contact " << p.min_face_contact << " is out of range [0, 1]";
+    throw Error(msg.str());
+  }
 }
 
 TopologyGraph
@@ -331,10 +336,28 @@ TopologyGraph::build(const VoxelBand& band,
         }
         frontier.swap(next);
       }
+      // Reached cells per region; an edge keeps a face only if it reaches a fair share
+      // of its strongest face (the corner's third face touches an edge at its ends).
       std::sort(found.begin(), found.end());
-      found.erase(std::unique(found.begin(), found.end()), found.end());
+      std::vector<std::pair<std::uint32_t, std::size_t>> counts;
       for (const std::uint32_t other : found)
-        pairs.emplace_back(std::min(label, other), std::max(label, other));
+        if (counts.empty() || counts.back().first != other)
+          counts.emplace_back(other, 1);
+        else
+          ++counts.back().second;
+      std::size_t strongest_face = 0;
+      for (const auto& [other, count] : counts)
+        if (region_classes[other - 1] == FeatureClass::kFace)
+          strongest_face = std::max(strongest_face, count);
+      for (const auto& [other, count] : counts) {
+        const bool weak_face =
+          from == FeatureClass::kEdge &&
+          region_classes[other - 1] == FeatureClass::kFace &&
+          static_cast<double>(count) <
+            parameters.min_face_contact * static_cast<double>(strongest_face);
+        if (!weak_face)
+          pairs.emplace_back(std::min(label, other), std::max(label, other));
+      }
     }
   }
   std::sort(pairs.begin(), pairs.end());

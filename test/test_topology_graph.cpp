@@ -84,6 +84,8 @@ buildGraph(const VoxelBand& band,
 {
   TopologyGraphParameters p;
   p.dilation_radius = radius;
+  p.min_face_contact =
+    0.0; // the literal dilation rule; the contact filter has its own test
   return TopologyGraph::build(band, labels, classes, p);
 }
 
@@ -977,6 +979,40 @@ TEST(TopologyGraph, WriteFileByExtension)
                visfeat::Error);
   EXPECT_THROW(g.writeFile(dir.string() + "/", meta), visfeat::Error);
   fs::remove_all(dir);
+}
+
+// An edge between faces A and B along its whole length, and a face C that only
+// touches the edge's end cell (the third face of a corner): the contact filter keeps
+// A and B and drops C; with the filter off (0) the literal dilation keeps all three.
+TEST(TopologyGraph, EdgeKeepsOnlyFacesAlongItsLength)
+{
+  GridSpec grid;
+  grid.dims = Eigen::Vector3i(40, 20, 3);
+  std::vector<visfeat::CellCoord> cells;
+  for (int y = 0; y <= 10; ++y)
+    for (int x = 0; x <= 20; ++x)
+      cells.emplace_back(x, y, 1);
+  for (int y = 4; y <= 6; ++y) // C: a patch right of the edge's end
+    for (int x = 21; x <= 25; ++x)
+      cells.emplace_back(x, y, 1);
+  const VoxelBand band = VoxelBand::fromCells(grid, cells, VoxelBand::Options{false});
+  // labels: 1 = A (y < 5), 2 = edge (y == 5, x <= 20), 3 = B (y > 5), 4 = C (x > 20)
+  std::vector<std::uint32_t> labels(band.size(), 0);
+  for (std::size_t i = 0; i < band.size(); ++i) {
+    const visfeat::CellCoord& c = band.coord(static_cast<visfeat::CellId>(i));
+    labels[i] = c.x() > 20 ? 4u : (c.y() < 5 ? 1u : (c.y() == 5 ? 2u : 3u));
+  }
+  const std::vector<FeatureClass> classes{FeatureClass::kFace, FeatureClass::kEdge,
+                                          FeatureClass::kFace, FeatureClass::kFace};
+  TopologyGraphParameters p;
+  p.dilation_radius = 2;
+  const TopologyGraph filtered = TopologyGraph::build(band, labels, classes, p);
+  EXPECT_EQ(filtered.facesOfEdge(2), (std::vector<std::uint32_t>{1, 3}));
+  p.min_face_contact = 0.0;
+  const TopologyGraph literal = TopologyGraph::build(band, labels, classes, p);
+  EXPECT_EQ(literal.facesOfEdge(2), (std::vector<std::uint32_t>{1, 3, 4}));
+  p.min_face_contact = 1.5;
+  EXPECT_THROW(TopologyGraph::validate(p), visfeat::Error);
 }
 
 } // namespace

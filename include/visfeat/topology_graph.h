@@ -61,6 +61,12 @@ struct TopologyGraphParameters
    *   the length of the shortest edge, or regions that are not incident get joined.
    */
   int dilation_radius = 2;
+  /** \brief An edge-face arc needs the edge's dilation to reach at least this fraction
+   * of the cells it reaches of its strongest face. A true incident face touches the
+   * edge along its whole length; the third face of a corner only near the edge's
+   * ends, within the dilation. Range [0, 1]; 0 keeps every face reached. Default 0.2.
+   */
+  double min_face_contact = 0.2;
 
   static constexpr int kMaxDilationRadius = 1000;
 };
