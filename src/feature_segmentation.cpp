@@ -214,6 +214,16 @@ FeatureSegmentation::validate(const SegmentationParameters& p, int max_radius)
         << " is out of range [0, 10] (cells)";
     throw Error(msg.str());
   }
+  if (p.vertex_reach < 1 || p.vertex_reach > 1000) {
+    std::ostringstream msg;
+    msg << "vertex_reach " << p.vertex_reach << " is out of range [1, 1000] (cells)";
+    throw Error(msg.str());
+  }
+  if (p.feature_width < 0 || p.feature_width > 1000) {
+    std::ostringstream msg;
+    msg << "feature_width " << p.feature_width << " is out of range [0, 1000] (cells)";
+    throw Error(msg.str());
+  }
   if (p.min_piece_cells < 0 || p.min_piece_cells > 1000000) {
     std::ostringstream msg;
     msg << "min_piece_cells " << p.min_piece_cells

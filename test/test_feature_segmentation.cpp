@@ -5,6 +5,7 @@
 // closing notes of the components issue list those it does not (yet).
 
 #include <visfeat/cad_models.h>
+#include <visfeat/error.h>
 #include <visfeat/feature_segmentation.h>
 #include <visfeat/synthetic_shapes.h>
 #include <visfeat/topology_graph.h>
@@ -252,6 +253,37 @@ TEST(RawMode, KeepsThePapersLiteralComponents)
   EXPECT_GT(unlabeled, 0u);
   // Its components are exactly the cores.
   EXPECT_EQ(seg.regions().size(), seg.cores().components().size());
+}
+
+TEST(SegmentationParameters, OutOfRangeIsRejectedByName)
+{
+  const auto rejects = [](visfeat::SegmentationParameters p, const std::string& name) {
+    try {
+      visfeat::FeatureSegmentation::validate(p, 16);
+    } catch (const visfeat::Error& e) {
+      return std::string(e.what()).find(name) != std::string::npos;
+    }
+    return false;
+  };
+  visfeat::SegmentationParameters p;
+  EXPECT_NO_THROW(visfeat::FeatureSegmentation::validate(p, 16));
+  p.vertex_reach = 0;
+  EXPECT_TRUE(rejects(p, "vertex_reach"));
+  p = {};
+  p.vertex_reach = -5;
+  EXPECT_TRUE(rejects(p, "vertex_reach"));
+  p = {};
+  p.feature_width = -1;
+  EXPECT_TRUE(rejects(p, "feature_width"));
+  p = {};
+  p.point_feature_distance = -0.5;
+  EXPECT_TRUE(rejects(p, "point_feature_distance"));
+  p = {};
+  p.min_piece_cells = -1;
+  EXPECT_TRUE(rejects(p, "min_piece_cells"));
+  p = {};
+  p.components.min_radius = 17; // above the cap of 16
+  EXPECT_TRUE(rejects(p, "min_radius"));
 }
 
 } // namespace
