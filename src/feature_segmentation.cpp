@@ -392,7 +392,7 @@ FeatureSegmentation::compute(const VoxelBand& band,
       for (const std::uint32_t m : reached[l])
         if (vertex_set.count(m))
           sets.join(l, m);
-    // A speck takes its neighbour's class; chains of specks resolve through the union.
+    // A speck joins its neighbour's set; chains of specks resolve through the union.
     std::vector<char> speck(cores.size() + 1, 0);
     for (const auto& [into, l] : speck_merges) {
       sets.attach(into, l);
@@ -414,9 +414,8 @@ FeatureSegmentation::compute(const VoxelBand& band,
         changed = true;
       }
     }
-    for (std::uint32_t l = 1; l <= cores.size(); ++l)
-      if (sets.find(l) != l && cls[l] != FeatureClass::kFace)
-        cls[l] = cls[sets.find(l)];
+    // From here on classes are read at set roots only: a merged label takes its
+    // root's class.
 
     // 4. Fragments: touching edges with the same pair of faces, touching vertices.
     std::map<std::uint32_t, std::set<std::uint32_t>> edge_reach;
