@@ -1,3 +1,4 @@
+#include <visfeat/band_dilation.h>
 #include <visfeat/error.h>
 #include <visfeat/feature_segmentation.h>
 #include <visfeat/region_growing.h>
@@ -313,33 +314,14 @@ FeatureSegmentation::compute(const VoxelBand& band,
     // the cores it reaches within vertex_reach cells.
     const std::uint32_t reach = static_cast<std::uint32_t>(parameters.vertex_reach);
     const std::vector<std::uint32_t>& core_of = result.cores_.cellLabels();
-    std::vector<std::uint32_t> dist(n, std::uint32_t(-1));
-    std::vector<CellId> touched, queue;
+    BandDilation dilation(band);
     auto dilate = [&](std::uint32_t l, const std::vector<CellId>& cells) {
       std::set<std::uint32_t> met;
-      for (const CellId c : touched)
-        dist[static_cast<std::size_t>(c)] = std::uint32_t(-1);
-      touched.clear();
-      queue = cells;
-      for (const CellId c : cells)
-        dist[static_cast<std::size_t>(c)] = 0;
-      touched = cells;
-      for (std::size_t head = 0; head < queue.size(); ++head) {
-        const CellId c = queue[head];
-        const std::uint32_t d = dist[static_cast<std::size_t>(c)];
+      dilation.run(cells, reach, [&](CellId c) {
         const std::uint32_t other = core_of[static_cast<std::size_t>(c)];
         if (other != 0 && other != l)
           met.insert(other);
-        if (d == reach)
-          continue;
-        for (const CellId nb : band.neighbours(c))
-          if (nb != kNoCell &&
-              dist[static_cast<std::size_t>(nb)] == std::uint32_t(-1)) {
-            dist[static_cast<std::size_t>(nb)] = d + 1;
-            touched.push_back(nb);
-            queue.push_back(nb);
-          }
-      }
+      });
       return met;
     };
     std::vector<std::vector<CellId>> core_cells(cores.size() + 1);

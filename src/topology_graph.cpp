@@ -1,3 +1,4 @@
+#include <visfeat/band_dilation.h>
 #include <visfeat/error.h>
 #include <visfeat/topology_graph.h>
 
@@ -296,14 +297,13 @@ TopologyGraph::build(const VoxelBand& band,
     node.max = grid.origin + grid.cell_size * (hi.array() + 1).matrix().cast<double>();
   }
 
-  // Arcs: a BFS bounded by dilation_radius from every vertex and edge region. The
-  // mark of a cell is the label of the last region whose BFS reached it, so the
-  // array needs no clearing between regions.
+  // Arcs: the geodesic dilation (BandDilation) of every vertex and edge region by
+  // dilation_radius, and the labels of the cells it reaches.
   std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
   const int radius = parameters.dilation_radius;
   if (radius > 0 && n_cells > 0) {
-    std::vector<std::uint32_t> mark(n_cells, 0);
-    std::vector<CellId> frontier, next;
+    BandDilation dilation(band);
+    std::vector<CellId> cells;
     std::vector<std::uint32_t> found;
     for (std::size_t r = 0; r < n_regions; ++r) {
       const FeatureClass from = region_classes[r];
@@ -312,30 +312,14 @@ TopologyGraph::build(const VoxelBand& band,
       if (offsets[r] == offsets[r + 1])
         continue;
       const std::uint32_t label = static_cast<std::uint32_t>(r + 1);
-      frontier.assign(region_cells.begin() + static_cast<std::ptrdiff_t>(offsets[r]),
-                      region_cells.begin() +
-                        static_cast<std::ptrdiff_t>(offsets[r + 1]));
-      for (const CellId c : frontier)
-        mark[static_cast<std::size_t>(c)] = label;
+      cells.assign(region_cells.begin() + static_cast<std::ptrdiff_t>(offsets[r]),
+                   region_cells.begin() + static_cast<std::ptrdiff_t>(offsets[r + 1]));
       found.clear();
-      for (int d = 1; d <= radius && !frontier.empty(); ++d) {
-        next.clear();
-        for (const CellId c : frontier) {
-          for (const CellId nb : band.neighbours(c)) {
-            if (nb == kNoCell)
-              continue;
-            const std::size_t i = static_cast<std::size_t>(nb);
-            if (mark[i] == label)
-              continue;
-            mark[i] = label;
-            next.push_back(nb);
-            const std::uint32_t other = cell_labels[i];
-            if (other != 0 && other != label && wanted(from, region_classes[other - 1]))
-              found.push_back(other);
-          }
-        }
-        frontier.swap(next);
-      }
+      dilation.run(cells, static_cast<std::uint32_t>(radius), [&](CellId c) {
+        const std::uint32_t other = cell_labels[static_cast<std::size_t>(c)];
+        if (other != 0 && other != label && wanted(from, region_classes[other - 1]))
+          found.push_back(other);
+      });
       // Reached cells per region; an edge keeps a face only if it reaches a fair share
       // of its strongest face (the corner's third face touches an edge at its ends).
       std::sort(found.begin(), found.end());
