@@ -3,7 +3,10 @@
 #include <visfeat/feature_segmentation.h>
 #include <visfeat/region_growing.h>
 
+#include <Eigen/Eigenvalues>
+
 #include <algorithm>
+#include <cmath>
 #include <functional>
 #include <iterator>
 #include <limits>
@@ -15,6 +18,19 @@
 
 namespace visfeat {
 namespace {
+
+/** Cells around a skeleton cell averaged into its centre: wider than the widest cores
+ * (about 4 cells, on 138-degree edges), short against the curvature of a circle. */
+constexpr int kSkeletonCentreRadius = 3;
+/** An edge is straight when its core cells lie within this many cells of their line
+ * (cores are up to about 4 cells wide). */
+constexpr double kStraightTolerance = 3.0;
+constexpr std::size_t kMinLineCells = 4;
+/** Smallest eigenvalue of sum(I - u u^T) over a corner's edge directions u: 0 when they
+ * are parallel, 1 - cos(angle) for two edges at an angle (0.13 at 30 degrees). */
+constexpr double kMinCornerConditioning = 0.1;
+/** Cells of a drawn edge within this distance of the corner join the vertex. */
+constexpr double kCornerCells = 1.5;
 
 /** Union-find over labels 1..n (0 unused). */
 class LabelUnion
@@ -82,8 +98,13 @@ contactsOf(const VoxelBand& band,
 
 /** Edge and vertex regions end where the watershed met the faces, in the valleys 3-4
  * cells out. Keep only their skeleton (core cells, plus a ridge-following path from
- * each vertex core to the cores of the edges it touches, so edges reach their
- * vertices) widened by `width` cells; the rest goes to the nearest face region. */
+ * each vertex core to the cores of its edges, so edges reach their vertices) widened by
+ * `width` cells; the rest goes to the nearest face region.
+ *
+ * A vertex and an edge are joined when their regions touch, or when an end of the
+ * edge's cores lies within `reach` cells of the vertex's cores: near a corner the
+ * radius drops below min_radius, and on obtuse corners (the icosahedron's) the faces
+ * take the cells between the last edge core and the vertex. */
 std::vector<char>
 thinFeatureRegions(const VoxelBand& band,
                    const VisibilityMap& map,
@@ -91,16 +112,29 @@ thinFeatureRegions(const VoxelBand& band,
                    const std::vector<char>& speck,
                    const std::vector<FeatureClass>& cls,
                    int width,
-                   std::vector<std::uint32_t>& labels)
+                   int reach,
+                   std::vector<std::uint32_t>& labels,
+                   std::vector<Eigen::Vector3f>& centres)
 {
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  centres.assign(band.size(), Eigen::Vector3f::Constant(nan));
+  auto setCentre = [&](CellId c, const Eigen::Vector3d& x) { // x in cell index units
+    centres[static_cast<std::size_t>(c)] =
+      (x + Eigen::Vector3d::Constant(0.5)).cast<float>();
+  };
   const std::size_t n = band.size();
   auto isFeature = [&](std::uint32_t label) {
     return label != 0 &&
            (cls[label] == FeatureClass::kEdge || cls[label] == FeatureClass::kVertex);
   };
   std::vector<char> skeleton(n, 0);
-  for (std::size_t c = 0; c < n; ++c)
+  std::map<std::uint32_t, std::vector<CellId>> vertex_cores, edge_cores;
+  for (std::size_t c = 0; c < n; ++c) {
     skeleton[c] = isFeature(labels[c]) && core_labels[c] != 0 && !speck[core_labels[c]];
+    if (skeleton[c])
+      (cls[labels[c]] == FeatureClass::kVertex ? vertex_cores : edge_cores)[labels[c]]
+        .push_back(static_cast<CellId>(c));
+  }
 
   // Vertex-edge pairs that touch.
   std::set<std::pair<std::uint32_t, std::uint32_t>> pairs;
@@ -112,12 +146,180 @@ thinFeatureRegions(const VoxelBand& band,
           cls[labels[static_cast<std::size_t>(nb)]] == FeatureClass::kEdge)
         pairs.emplace(labels[c], labels[static_cast<std::size_t>(nb)]);
   }
-  // Ridge paths: Dijkstra from the vertex's core cells through the two regions to the
-  // first core cell of the edge; low radii cost more, so the path follows the ridge.
+  // Each end of an edge (the farthest pair of its core cells) and the vertex nearest to
+  // it, within reach.
+  auto distance = [&](CellId a, CellId b) {
+    return (band.coord(a) - band.coord(b)).cast<double>().norm();
+  };
+  auto farthestFrom = [&](CellId from, const std::vector<CellId>& cells) {
+    CellId best = from;
+    double best_distance = -1.0;
+    for (const CellId c : cells)
+      if (const double d = distance(from, c); d > best_distance) {
+        best_distance = d;
+        best = c;
+      }
+    return best;
+  };
+  for (const auto& [edge, cells] : edge_cores) {
+    const CellId one_end = farthestFrom(cells.front(), cells);
+    const CellId other_end = farthestFrom(one_end, cells);
+    for (const CellId end : {one_end, other_end}) {
+      std::uint32_t nearest = 0;
+      double nearest_distance = static_cast<double>(reach);
+      for (const auto& [vertex, vertex_cells] : vertex_cores)
+        for (const CellId c : vertex_cells)
+          if (const double d = distance(end, c); d <= nearest_distance) {
+            nearest_distance = d;
+            nearest = vertex;
+          }
+      if (nearest != 0)
+        pairs.emplace(nearest, edge);
+    }
+  }
+  // Straight edges and corners. Near a corner the radius drops below min_radius, so an
+  // edge's core stops short of it and the vertex's cores are specks at the ends of its
+  // edges rather than at the tip. Where a vertex has two or more straight edges, its
+  // corner is the point nearest to their lines (least squares), and each edge is drawn
+  // from its core's end to that corner.
+  struct Line
+  {
+    Eigen::Vector3d point = Eigen::Vector3d::Zero(); // on the line, cell units
+    Eigen::Vector3d direction = Eigen::Vector3d::UnitX();
+    bool straight = false;
+  };
+  std::map<std::uint32_t, Line> lines;
+  for (const auto& [edge, cells] : edge_cores) {
+    if (cells.size() < kMinLineCells)
+      continue;
+    Line line;
+    for (const CellId c : cells)
+      line.point += band.coord(c).cast<double>();
+    line.point /= static_cast<double>(cells.size());
+    Eigen::Matrix3d scatter = Eigen::Matrix3d::Zero();
+    for (const CellId c : cells) {
+      const Eigen::Vector3d d = band.coord(c).cast<double>() - line.point;
+      scatter += d * d.transpose();
+    }
+    line.direction = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(scatter)
+                       .eigenvectors()
+                       .col(2)
+                       .normalized();
+    double worst = 0.0;
+    for (const CellId c : cells) {
+      const Eigen::Vector3d d = band.coord(c).cast<double>() - line.point;
+      worst = std::max(worst, (d - d.dot(line.direction) * line.direction).norm());
+    }
+    line.straight = worst <= kStraightTolerance;
+    lines[edge] = line;
+  }
+  // On a straight edge, the middle of the skeleton is its line.
+  for (const auto& [edge, line] : lines)
+    if (line.straight)
+      for (const CellId c : edge_cores[edge]) {
+        const Eigen::Vector3d d = band.coord(c).cast<double>() - line.point;
+        setCentre(c, line.point + d.dot(line.direction) * line.direction);
+      }
+  std::map<std::uint32_t, std::vector<std::uint32_t>> straight_edges_of;
+  for (const auto& [vertex, edge] : pairs)
+    if (lines.count(edge) && lines[edge].straight)
+      straight_edges_of[vertex].push_back(edge);
+  auto nearestCell = [&](const Eigen::Vector3d& x) {
+    const CellCoord at = x.array().round().cast<int>().matrix();
+    CellId best = kNoCell;
+    double best_distance = std::numeric_limits<double>::infinity();
+    for (int dz = -1; dz <= 1; ++dz)
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+          const CellId c = band.find(at + CellCoord(dx, dy, dz));
+          if (c == kNoCell)
+            continue;
+          const double d = (band.coord(c).cast<double>() - x).norm();
+          if (d < best_distance) {
+            best_distance = d;
+            best = c;
+          }
+        }
+    return best;
+  };
+  std::set<std::pair<std::uint32_t, std::uint32_t>> drawn;
+  for (const auto& [vertex, edges] : straight_edges_of) {
+    if (edges.size() < 2)
+      continue;
+    Eigen::Matrix3d a = Eigen::Matrix3d::Zero();
+    Eigen::Vector3d b = Eigen::Vector3d::Zero();
+    for (const std::uint32_t e : edges) {
+      const Line& line = lines[e];
+      const Eigen::Matrix3d across =
+        Eigen::Matrix3d::Identity() - line.direction * line.direction.transpose();
+      a += across;
+      b += across * line.point;
+    }
+    // Nearly parallel lines (a straight run through a speck) have no corner.
+    if (Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(a).eigenvalues()(0) <
+        kMinCornerConditioning)
+      continue;
+    const Eigen::Vector3d corner = a.ldlt().solve(b);
+    double to_vertex = std::numeric_limits<double>::infinity();
+    for (const CellId c : vertex_cores[vertex])
+      to_vertex = std::min(to_vertex, (band.coord(c).cast<double>() - corner).norm());
+    if (!(to_vertex <= reach) || nearestCell(corner) == kNoCell)
+      continue;
+    for (const std::uint32_t e : edges) {
+      const Line& line = lines[e];
+      // The end of the edge's cores on the corner's side.
+      double t_end = std::numeric_limits<double>::infinity();
+      double t_corner = (corner - line.point).dot(line.direction);
+      double best = std::numeric_limits<double>::infinity();
+      for (const CellId c : edge_cores[e]) {
+        const double t =
+          (band.coord(c).cast<double>() - line.point).dot(line.direction);
+        if (std::abs(t - t_corner) < best) {
+          best = std::abs(t - t_corner);
+          t_end = t;
+        }
+      }
+      const Eigen::Vector3d end = line.point + t_end * line.direction;
+      const double length = (end - corner).norm();
+      const int steps = std::max(1, static_cast<int>(std::ceil(length * 4.0)));
+      for (int k = 0; k <= steps; ++k) {
+        const Eigen::Vector3d x = corner + (end - corner) * (double(k) / steps);
+        const CellId c = nearestCell(x);
+        if (c == kNoCell)
+          continue;
+        const std::uint32_t l = labels[static_cast<std::size_t>(c)];
+        if (l != vertex && l != e && isFeature(l))
+          continue; // another feature's cell stays its own
+        const bool first = !skeleton[static_cast<std::size_t>(c)] ||
+                           std::isnan(centres[static_cast<std::size_t>(c)].x());
+        skeleton[static_cast<std::size_t>(c)] = 1;
+        labels[static_cast<std::size_t>(c)] =
+          (x - corner).norm() <= kCornerCells ? vertex : e;
+        const Eigen::Vector3d at = band.coord(c).cast<double>();
+        if (first ||
+            (x - at).norm() < (centres[static_cast<std::size_t>(c)].cast<double>() -
+                               Eigen::Vector3d::Constant(0.5) - at)
+                                .norm())
+          setCentre(c, x);
+      }
+      drawn.emplace(vertex, e);
+    }
+    // The vertex is now its corner: its own cores (specks at the ends of its edges,
+    // pieces of faces) leave the skeleton.
+    for (const CellId c : vertex_cores[vertex])
+      if (std::isnan(centres[static_cast<std::size_t>(c)].x()))
+        skeleton[static_cast<std::size_t>(c)] = 0;
+  }
+
+  // Ridge paths: Dijkstra from the vertex's core cells to the first core cell of the
+  // edge, through the two regions and the faces (not through other features); low
+  // radii cost more, so the path follows the ridge. Its cells join the edge.
   const int cap = map.parameters().max_radius;
   std::vector<double> cost(n, std::numeric_limits<double>::infinity());
   std::vector<CellId> from(n, kNoCell), touched;
   for (const auto& [vertex, edge] : pairs) {
+    if (drawn.count({vertex, edge}))
+      continue;
     for (const CellId c : touched) {
       cost[static_cast<std::size_t>(c)] = std::numeric_limits<double>::infinity();
       from[static_cast<std::size_t>(c)] = kNoCell;
@@ -125,20 +327,19 @@ thinFeatureRegions(const VoxelBand& band,
     touched.clear();
     using Entry = std::pair<double, CellId>;
     std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
-    for (std::size_t c = 0; c < n; ++c)
-      if (labels[c] == vertex && core_labels[c] != 0 && !speck[core_labels[c]]) {
-        cost[c] = 0.0;
-        touched.push_back(static_cast<CellId>(c));
-        queue.emplace(0.0, static_cast<CellId>(c));
-      }
+    for (const CellId c : vertex_cores[vertex]) {
+      cost[static_cast<std::size_t>(c)] = 0.0;
+      touched.push_back(c);
+      queue.emplace(0.0, c);
+    }
     CellId reached = kNoCell;
     while (!queue.empty()) {
       const auto [d, c] = queue.top();
       queue.pop();
       if (d > cost[static_cast<std::size_t>(c)])
         continue;
-      const std::uint32_t core = core_labels[static_cast<std::size_t>(c)];
-      if (labels[static_cast<std::size_t>(c)] == edge && core != 0 && !speck[core]) {
+      if (labels[static_cast<std::size_t>(c)] == edge &&
+          skeleton[static_cast<std::size_t>(c)]) {
         reached = c;
         break;
       }
@@ -146,7 +347,7 @@ thinFeatureRegions(const VoxelBand& band,
         if (nb == kNoCell)
           continue;
         const std::uint32_t l = labels[static_cast<std::size_t>(nb)];
-        if (l != vertex && l != edge)
+        if (l == 0 || (l != vertex && l != edge && isFeature(l)))
           continue;
         const double next = d + 1.0 + std::max(0, cap - map.radius(nb));
         if (next < cost[static_cast<std::size_t>(nb)]) {
@@ -157,8 +358,11 @@ thinFeatureRegions(const VoxelBand& band,
         }
       }
     }
-    for (CellId c = reached; c != kNoCell; c = from[static_cast<std::size_t>(c)])
+    for (CellId c = reached; c != kNoCell; c = from[static_cast<std::size_t>(c)]) {
       skeleton[static_cast<std::size_t>(c)] = 1;
+      if (labels[static_cast<std::size_t>(c)] != vertex)
+        labels[static_cast<std::size_t>(c)] = edge;
+    }
   }
 
   // Keep feature cells within `width` steps of their region's skeleton.
@@ -201,6 +405,40 @@ thinFeatureRegions(const VoxelBand& band,
     if (labels[c] == 0)
       labels[c] = original[c];
   return skeleton;
+}
+
+/** Per skeleton cell, the mean of the skeleton cells of its region within `radius`
+ * cells (in cell units, cell (i,j,k) spanning [i, i+1) x ...): where a core is several
+ * cells wide (obtuse edges), the mean lies on its middle line, near the true curve. */
+void
+middleOfSkeleton(const VoxelBand& band,
+                 const std::vector<std::uint32_t>& labels,
+                 const std::vector<char>& skeleton,
+                 int radius,
+                 std::vector<Eigen::Vector3f>& centres)
+{
+  const int r2 = radius * radius;
+  for (std::size_t c = 0; c < band.size(); ++c) {
+    if (!skeleton[c] || !std::isnan(centres[c].x()))
+      continue;
+    const CellCoord at = band.coord(static_cast<CellId>(c));
+    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+    int count = 0;
+    for (int dz = -radius; dz <= radius; ++dz)
+      for (int dy = -radius; dy <= radius; ++dy)
+        for (int dx = -radius; dx <= radius; ++dx) {
+          if (dx * dx + dy * dy + dz * dz > r2)
+            continue;
+          const CellCoord q = at + CellCoord(dx, dy, dz);
+          const CellId m = band.find(q);
+          if (m != kNoCell && skeleton[static_cast<std::size_t>(m)] &&
+              labels[static_cast<std::size_t>(m)] == labels[c]) {
+            sum += q.cast<double>();
+            ++count;
+          }
+        }
+    centres[c] = (sum / count).cast<float>() + Eigen::Vector3f::Constant(0.5f);
+  }
 }
 
 } // namespace
@@ -332,11 +570,42 @@ FeatureSegmentation::compute(const VoxelBand& band,
       static_cast<std::uint32_t>(parameters.components.vertex_max_cells);
     std::vector<std::uint32_t> vertices;
     std::map<std::uint32_t, std::set<std::uint32_t>> reached;
+    for (std::uint32_t l = 1; l <= cores.size(); ++l)
+      if (cores[l - 1].feature_class != FeatureClass::kFace &&
+          cores[l - 1].cells <= vertex_max && !core_cells[l].empty())
+        reached[l] = dilate(l, core_cells[l]);
+    // A short edge may break into small cores that all pass the vertex test (they
+    // reach the edges of both its corners). A small core with pieces of its own edge
+    // on opposite sides lies inside that edge, not at a corner: it is never a vertex.
+    std::vector<Eigen::Vector3d> centroid(cores.size() + 1, Eigen::Vector3d::Zero());
     for (std::uint32_t l = 1; l <= cores.size(); ++l) {
-      if (cores[l - 1].feature_class == FeatureClass::kFace ||
-          cores[l - 1].cells > vertex_max || core_cells[l].empty())
+      for (const CellId c : core_cells[l])
+        centroid[l] += band.coord(c).cast<double>();
+      if (!core_cells[l].empty())
+        centroid[l] /= static_cast<double>(core_cells[l].size());
+    }
+    auto insideAnEdge = [&](std::uint32_t l) {
+      const auto own = signature.find(l);
+      if (own == signature.end())
+        return false;
+      std::vector<Eigen::Vector3d> directions;
+      for (const std::uint32_t m : reached[l]) {
+        const auto other = signature.find(m);
+        if (other == signature.end() || other->second != own->second)
+          continue;
+        const Eigen::Vector3d d = centroid[m] - centroid[l];
+        if (d.norm() > 0.0)
+          directions.push_back(d.normalized());
+      }
+      for (std::size_t i = 0; i < directions.size(); ++i)
+        for (std::size_t j = i + 1; j < directions.size(); ++j)
+          if (directions[i].dot(directions[j]) < -0.5)
+            return true;
+      return false;
+    };
+    for (std::uint32_t l = 1; l <= cores.size(); ++l) {
+      if (!reached.count(l) || insideAnEdge(l))
         continue;
-      reached[l] = dilate(l, core_cells[l]);
       std::set<std::pair<std::uint32_t, std::uint32_t>> met;
       if (signature.count(l))
         met.insert(signature[l]);
@@ -357,7 +626,7 @@ FeatureSegmentation::compute(const VoxelBand& band,
       for (const std::uint32_t l : std::vector<std::uint32_t>(vertices))
         for (const std::uint32_t m : reached[l])
           if (cls[m] != FeatureClass::kFace && cores[m - 1].cells <= vertex_max &&
-              absorbed.insert(m).second)
+              !insideAnEdge(m) && absorbed.insert(m).second)
             vertices.push_back(m);
     }
     for (const std::uint32_t l : vertices) {
@@ -477,9 +746,12 @@ FeatureSegmentation::compute(const VoxelBand& band,
         labels[c] = 0;
     }
     if (parameters.complete_regions)
-      result.skeleton_ =
-        thinFeatureRegions(band, map, result.cores_.cellLabels(), speck, cls,
-                           parameters.feature_width, labels);
+      result.skeleton_ = thinFeatureRegions(
+        band, map, result.cores_.cellLabels(), speck, cls, parameters.feature_width,
+        parameters.vertex_reach, labels, result.skeleton_centres_);
+    if (parameters.complete_regions)
+      middleOfSkeleton(band, labels, result.skeleton_, kSkeletonCentreRadius,
+                       result.skeleton_centres_);
   }
 
   // Renumber 1.. by smallest cell id.

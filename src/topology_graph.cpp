@@ -344,6 +344,27 @@ TopologyGraph::build(const VoxelBand& band,
       }
     }
   }
+  // A corner lies on every face of its edges, even where its (small) region does not
+  // reach that face's cells: vertex-face arcs also follow vertex-edge-face paths.
+  if (parameters.vertex_faces_from_edges) {
+    std::vector<std::vector<std::uint32_t>> edges_of_vertex(n_regions + 1),
+      faces_of_edge(n_regions + 1);
+    for (const auto& [a, b] : pairs) {
+      const FeatureClass ca = region_classes[a - 1], cb = region_classes[b - 1];
+      if (ca == FeatureClass::kVertex && cb == FeatureClass::kEdge)
+        edges_of_vertex[a].push_back(b);
+      else if (cb == FeatureClass::kVertex && ca == FeatureClass::kEdge)
+        edges_of_vertex[b].push_back(a);
+      else if (ca == FeatureClass::kEdge && cb == FeatureClass::kFace)
+        faces_of_edge[a].push_back(b);
+      else if (cb == FeatureClass::kEdge && ca == FeatureClass::kFace)
+        faces_of_edge[b].push_back(a);
+    }
+    for (std::uint32_t v = 1; v <= n_regions; ++v)
+      for (const std::uint32_t e : edges_of_vertex[v])
+        for (const std::uint32_t f : faces_of_edge[e])
+          pairs.emplace_back(std::min(v, f), std::max(v, f));
+  }
   std::sort(pairs.begin(), pairs.end());
   pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
   for (const auto& p : pairs)

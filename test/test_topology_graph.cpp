@@ -84,8 +84,10 @@ buildGraph(const VoxelBand& band,
 {
   TopologyGraphParameters p;
   p.dilation_radius = radius;
-  p.min_face_contact =
-    0.0; // the literal dilation rule; the contact filter has its own test
+  // The literal dilation rule; the contact filter and the vertex-face rule have their
+  // own tests.
+  p.min_face_contact = 0.0;
+  p.vertex_faces_from_edges = false;
   return TopologyGraph::build(band, labels, classes, p);
 }
 
@@ -657,6 +659,25 @@ TEST(TopologyGraph, HollowBoxTopology)
   for (int r : {1, 2, 3, 4})
     EXPECT_EQ(buildGraph(band, labels, classes, r).arcs(),
               bruteForceArcs(band, labels, classes, r));
+
+  // A corner lies on the faces of its edges: with vertex_faces_from_edges, radius 1
+  // gives the 8 x 3 vertex-face arcs that its dilation does not reach.
+  TopologyGraphParameters corner;
+  corner.dilation_radius = 1;
+  corner.min_face_contact = 0.0;
+  corner.vertex_faces_from_edges = true;
+  const TopologyGraph g1_corner = TopologyGraph::build(band, labels, classes, corner);
+  EXPECT_EQ(g1_corner.arcs(), g2.arcs());
+  for (std::uint32_t id = 1; id <= g1_corner.size(); ++id)
+    if (g1_corner.node(id).feature_class == kV) {
+      std::set<std::uint32_t> faces_of_edges;
+      for (const std::uint32_t e : g1_corner.neighbours(id, kE))
+        for (const std::uint32_t f : g1_corner.facesOfEdge(e))
+          faces_of_edges.insert(f);
+      const Ids faces = g1_corner.neighbours(id, kF);
+      EXPECT_EQ(std::set<std::uint32_t>(faces.begin(), faces.end()), faces_of_edges)
+        << id;
+    }
 
   // Boost Graph algorithms run on graph(): the box is one connected piece.
   std::vector<int> component(boost::num_vertices(g1.graph()));

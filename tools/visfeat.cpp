@@ -571,7 +571,11 @@ run(int argc, char** argv)
       {"complete_regions", sp.complete_regions ? "true" : "false"},
       {"opacity", std::to_string(opt.opacity)},
       {"repair", opt.repair ? "true" : "false"},
-      {"graph_dilation", std::to_string(graph.parameters().dilation_radius)}};
+      {"point_feature_distance", std::to_string(sp.point_feature_distance)},
+      {"graph_dilation", std::to_string(graph.parameters().dilation_radius)},
+      {"graph_min_face_contact", std::to_string(graph.parameters().min_face_contact)},
+      {"graph_vertex_faces_from_edges",
+       graph.parameters().vertex_faces_from_edges ? "true" : "false"}};
     std::ofstream file(vt::temporaryPath(opt.graph));
     const std::string ext = vt::lowerExtension(opt.graph);
     if (ext == ".json")

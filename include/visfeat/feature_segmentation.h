@@ -4,6 +4,8 @@
 #include <visfeat/visibility_map.h>
 #include <visfeat/voxel_band.h>
 
+#include <Eigen/Core>
+
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -35,11 +37,13 @@ struct SegmentationParameters
    * edge to its vertices); the rest of their watershed basin goes to the nearest face.
    * Cores lie within about 1.5 cells of the true curve. Default 1 cell. */
   int feature_width = 1;
-  /** \brief Per point (the PCL front class): a point in a widened edge or vertex cell
-   * (not on the skeleton) stays edge/vertex only when it lies within this distance,
-   * in cells, of the centre of a skeleton cell of its region; otherwise it joins the
-   * nearest face cell around it. Cells are coarser than the points: this keeps
-   * feature points within about this distance of the curve. 0 = off. Default 1.0. */
+  /** \brief Per point (the PCL front class): a point is a vertex or edge point when
+   * it lies within this distance, in cells, of the middle line of a skeleton around
+   * it (skeletonCentres(); the nearest names its region); otherwise it belongs to its
+   * face cell, or to the nearest face cell around it. Cells are coarser than the
+   * points and the cores of obtuse edges are several cells wide: this keeps feature
+   * points within about this distance of the curve. 0 = off (points take their cell's
+   * label). Default 1.0. */
   double point_feature_distance = 1.0;
 };
 
@@ -68,7 +72,11 @@ struct Region
  *     one an edge between its two main faces); one or none make it a speck, merged into
  *     the neighbour it shares most boundary with;
  *  4. edge regions that touch each other and separate the same two faces are one edge
- *     (fragments of a ridge); vertex regions that touch each other are one vertex.
+ *     (fragments of a ridge); vertex regions that touch each other are one vertex;
+ *     a small core with pieces of its own edge on both sides is never a vertex;
+ *  5. complete regions: edges and vertices are cut to their skeleton; a vertex with
+ *     two or more straight edges becomes the point nearest to their lines (the
+ *     corner), and each edge is drawn from its core's end to it.
  * Labels are then renumbered 1.. in the order of each region's smallest cell id.
  */
 class FeatureSegmentation
@@ -97,6 +105,16 @@ public:
    * core cells and the ridge paths to its vertices); empty unless complete regions. */
   const std::vector<char>& skeleton() const { return skeleton_; }
 
+  /** \brief Per cell, for skeleton cells, the middle of the skeleton of its region
+   * around it: the mean of the region's skeleton cells within 3 cells, in cell units
+   * (cell (i,j,k) spans [i, i+1) x [j, j+1) x [k, k+1); world = origin + cell_size *
+   * value). NaN elsewhere; empty unless complete regions. Where an edge's core is
+   * several cells wide (obtuse edges) this is its middle line, near the true curve. */
+  const std::vector<Eigen::Vector3f>& skeletonCentres() const
+  {
+    return skeleton_centres_;
+  }
+
   /** \brief The cores the regions grew from. */
   const ComponentSet& cores() const { return cores_; }
 
@@ -108,6 +126,7 @@ private:
   std::vector<std::uint32_t> labels_;
   std::vector<Region> regions_;
   std::vector<char> skeleton_;
+  std::vector<Eigen::Vector3f> skeleton_centres_;
 };
 
 } // namespace visfeat

@@ -47,7 +47,8 @@ struct TopologyGraphParameters
    * cells reaches a cell of B: some cell of B is at most dilation_radius 6-steps from
    * a cell of A, walking through band cells (any band cell, labelled or not). This is
    * the paper's vertex-edge rule (section 5) applied to all three pairs; the test is
-   * symmetric. Two regions separated by a gap of k unlabelled cells are joined iff
+   * symmetric (see also vertex_faces_from_edges). Two regions separated by a gap of k
+   * unlabelled cells are joined iff
    * dilation_radius >= k + 1; touching regions iff dilation_radius >= 1; 0 joins
    * nothing.
    *
@@ -67,6 +68,11 @@ struct TopologyGraphParameters
    * ends, within the dilation. Range [0, 1]; 0 keeps every face reached. Default 0.2.
    */
   double min_face_contact = 0.2;
+  /** \brief Also join a vertex to every face of its edges (vertex-edge and edge-face
+   * arcs found as above): a corner lies on the faces of its edges even where its small
+   * region does not reach their cells. Default true; false keeps the dilation rule
+   * alone. */
+  bool vertex_faces_from_edges = true;
 
   static constexpr int kMaxDilationRadius = 1000;
 };

@@ -211,6 +211,10 @@ protected:
   void computeFeature(PointCloudOut& output) override;
 
 private:
+  /** \brief Marks the cells within one cell (26-neighbourhood) of a skeleton cell: only
+   * their points can be feature points. */
+  void markCellsNearSkeleton();
+
   void refinePointLabel(const PointInT& p,
                         CellId cell,
                         std::uint32_t& label,
@@ -232,6 +236,7 @@ private:
   FreeSpace free_space_;
   VisibilityMap map_;
   FeatureSegmentation segmentation_;
+  std::vector<char> near_skeleton_;
   int graph_dilation_ = -1;
   TopologyGraph graph_;
   PhaseTimes times_;

@@ -84,20 +84,45 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::initCompute()
 
 template <typename PointInT, typename PointOutT>
 void
+VisibilityFeatureEstimation<PointInT, PointOutT>::markCellsNearSkeleton()
+{
+  const std::vector<char>& skeleton = segmentation_.skeleton();
+  near_skeleton_.assign(skeleton.size(), 0);
+  for (std::size_t c = 0; c < skeleton.size(); ++c) {
+    if (!skeleton[c])
+      continue;
+    const CellCoord at = band_.coord(static_cast<CellId>(c));
+    for (int dz = -1; dz <= 1; ++dz)
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+          const CellId n = band_.find(at + CellCoord(dx, dy, dz));
+          if (n != kNoCell)
+            near_skeleton_[static_cast<std::size_t>(n)] = 1;
+        }
+  }
+}
+
+template <typename PointInT, typename PointOutT>
+void
 VisibilityFeatureEstimation<PointInT, PointOutT>::refinePointLabel(
   const PointInT& p, CellId cell, std::uint32_t& label, FeatureClass& cls) const
 {
-  // A widened edge/vertex cell spans points up to ~2 cells from the curve: keep a point
-  // only near the skeleton, else give it to the closest face cell around it.
+  // Cells are coarser than the points, and the cores of obtuse edges are several cells
+  // wide: a point is a feature point when it lies within point_feature_distance of the
+  // middle line of a skeleton around it (the nearest one names its region); otherwise
+  // it belongs to its face cell, or to the closest face cell around it.
   const std::vector<char>& skeleton = segmentation_.skeleton();
   const double limit = segmentation_parameters_.point_feature_distance;
-  if (limit <= 0.0 || skeleton.empty() || skeleton[static_cast<std::size_t>(cell)] ||
-      (cls != FeatureClass::kEdge && cls != FeatureClass::kVertex))
+  if (limit <= 0.0 || skeleton.empty() || near_skeleton_.empty() ||
+      !near_skeleton_[static_cast<std::size_t>(cell)])
     return;
   const GridSpec& grid = band_.grid();
-  const Eigen::Vector3d q(p.x, p.y, p.z);
+  const Eigen::Vector3d q =
+    (Eigen::Vector3d(p.x, p.y, p.z) - grid.origin) / grid.cell_size; // cell units
   const CellCoord c = band_.coord(cell);
+  const std::vector<Eigen::Vector3f>& centres = segmentation_.skeletonCentres();
   double near_skeleton = std::numeric_limits<double>::infinity();
+  CellId nearest_skeleton = kNoCell;
   double near_face = std::numeric_limits<double>::infinity();
   std::uint32_t face = 0;
   for (int dz = -1; dz <= 1; ++dz)
@@ -106,16 +131,29 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::refinePointLabel(
         const CellId n = band_.find(c + CellCoord(dx, dy, dz));
         if (n == kNoCell)
           continue;
-        const double d = (grid.cellCenter(band_.coord(n)) - q).norm() / grid.cell_size;
-        const std::uint32_t l = segmentation_.cellLabels()[static_cast<std::size_t>(n)];
-        if (skeleton[static_cast<std::size_t>(n)] && l == label)
-          near_skeleton = std::min(near_skeleton, d);
-        if (segmentation_.cellClass(n) == FeatureClass::kFace && d < near_face) {
-          near_face = d;
-          face = l;
+        if (skeleton[static_cast<std::size_t>(n)]) {
+          const double d =
+            (centres[static_cast<std::size_t>(n)].template cast<double>() - q).norm();
+          if (d < near_skeleton) {
+            near_skeleton = d;
+            nearest_skeleton = n;
+          }
+        }
+        if (segmentation_.cellClass(n) == FeatureClass::kFace) {
+          const double d = (band_.coord(n).template cast<double>() +
+                            Eigen::Vector3d::Constant(0.5) - q)
+                             .norm();
+          if (d < near_face) {
+            near_face = d;
+            face = segmentation_.cellLabels()[static_cast<std::size_t>(n)];
+          }
         }
       }
-  if (near_skeleton > limit && face != 0) {
+  if (near_skeleton <= limit) {
+    label = segmentation_.cellLabels()[static_cast<std::size_t>(nearest_skeleton)];
+    cls = segmentation_.cellClass(nearest_skeleton);
+  } else if ((cls == FeatureClass::kEdge || cls == FeatureClass::kVertex) &&
+             face != 0) {
     label = face;
     cls = FeatureClass::kFace;
   }
@@ -190,6 +228,7 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::computeFeature(PointCloudOut& 
     times_.segmentation_ms = detail::millisecondsSince(start);
 
     start = Clock::now();
+    markCellsNearSkeleton();
     const float nan = std::numeric_limits<float>::quiet_NaN();
     const GridSpec& grid = band_.grid();
     auto cellOf = [&](std::size_t index, const PointInT& p) -> CellId {
