@@ -53,10 +53,12 @@ samplesForSpacing(double area, double spacing, std::size_t max_count)
   if (!(area > 0.0) || !std::isfinite(area))
     throw Error("the mesh has no area to sample");
   const double count = std::ceil(area / (spacing * spacing));
-  if (!(count <= static_cast<double>(max_count)))
-    throw Error("spacing " + std::to_string(spacing) + " gives " +
-                std::to_string(count) + " points, more than " +
-                std::to_string(max_count));
+  if (!(count <= static_cast<double>(max_count))) {
+    std::ostringstream s;
+    s << "spacing " << spacing << " over area " << area << " gives " << count
+      << " points, more than " << max_count;
+    throw Error(s.str());
+  }
   return static_cast<std::size_t>(count);
 }
 

@@ -260,8 +260,9 @@ cloudShape(const pcl::PointCloud<pcl::PointXYZ>& cloud)
  * visfeat_generate defines it (spacing^2 = surface area per point), estimated from the
  * median distance r to the k-th nearest neighbour over a deterministic subsample
  * (every n/queries-th finite point): k neighbours cover a disc of area pi r^2, so
- * spacing = r sqrt(pi / k). The median ignores edges and outliers; k = 8 ignores
- * a few duplicate points. */
+ * spacing = r sqrt(pi / (k - 1/3)) (k - 1/3: the median of the count for uniform
+ * random samples). The median ignores edges and outliers; k = 8 ignores a few
+ * duplicate points. */
 struct SpacingEstimate
 {
   double spacing = 0.0;
@@ -311,7 +312,9 @@ estimateSpacing(const pcl::PointCloud<pcl::PointXYZ>& cloud,
             std::to_string(estimate.k) + " or more duplicates";
     return false;
   }
-  estimate.spacing = r * std::sqrt(3.14159265358979323846 / estimate.k);
+  // For uniform random samples pi r^2 / spacing^2 is Gamma(k, 1) distributed, whose
+  // median is about k - 1/3.
+  estimate.spacing = r * std::sqrt(3.14159265358979323846 / (estimate.k - 1.0 / 3.0));
   return true;
 }
 

@@ -337,8 +337,8 @@ run(int argc, char** argv)
       !args.getInteger("-memory_limit_mb", 0, 1LL << 40, opt.memory_limit_mb, error) ||
       !args.getInteger("-mesh_points", 1, static_cast<long long>(vt::kMaxMeshPoints),
                        opt.mesh.points, error) ||
-      !args.getReal("-mesh_spacing", 0.0, std::numeric_limits<double>::max(),
-                    opt.mesh.spacing, error))
+      !args.getReal("-mesh_spacing", -std::numeric_limits<double>::max(),
+                    std::numeric_limits<double>::max(), opt.mesh.spacing, error))
     return fail(error);
   if (args.has("-mesh_spacing") && !(opt.mesh.spacing > 0.0))
     return fail("-mesh_spacing must be positive, got " + args.value("-mesh_spacing"));
