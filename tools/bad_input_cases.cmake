@@ -24,7 +24,7 @@ set(VISFEAT_BAD_INPUT_CASES
   "resolution_zero|-resolution must be in&&got 0"
   "resolution_huge|-resolution must be in&&got 100000"
   "resolution_text|-resolution expects an integer, got 'abc'"
-  "resolution_over_memory|memory"
+  "resolution_over_memory|more than the limit of 1.0 MiB: lower the resolution"
   "threads_negative|-threads must be in&&got -1"
   "opacity_nan|-opacity expects a number, got 'nan'"
   "min_radius_above_max|-min_radius 20 exceeds -max_radius 10"
