@@ -4,7 +4,8 @@
 #    every CAD model of visfeat_generate with its -truth JSON (counts).
 # 2. .ply input (double coordinates, upper-case extension) and an input that already has
 #    a label field.
-# 3. Bad inputs exit non-zero with an error line and leave no output (nor .tmp) file.
+# Bad inputs have a ctest each (bad_input_test.cmake); graphs, meshes and the automatic
+# resolution are checked by end_to_end_test.cmake.
 
 cmake_minimum_required(VERSION 3.16) # policies NEW (CMP0053: plain ${} expansion)
 
@@ -78,23 +79,6 @@ function(expect_header file expected_fields expected_points)
     report_failure("${file}: POINTS '${points}', expected ${expected_points}")
   endif()
   message(STATUS "ok: ${file}: FIELDS ${fields}; POINTS ${points}")
-endfunction()
-
-# expect_failure(<name> <output file> <command...>): non-zero exit, an error message,
-# and neither the output nor its temporary file left behind.
-function(expect_failure name output)
-  file(REMOVE "${output}" "${output}.tmp")
-  run(${name} ${ARGN})
-  if(${name}_rc EQUAL 0)
-    report_failure("${name}: exit code 0 for a bad input\n  ${ARGN}\n${${name}_out}")
-  elseif(NOT ${name}_out MATCHES "error")
-    report_failure("${name}: no error message\n  ${ARGN}\n${${name}_out}")
-  elseif(EXISTS "${output}" OR EXISTS "${output}.tmp")
-    report_failure("${name}: left '${output}' (or .tmp) behind")
-  else()
-    string(REGEX MATCH "error: [^\n]*" msg "${${name}_out}")
-    message(STATUS "ok: ${name} fails (rc ${${name}_rc}): ${msg}")
-  endif()
 endfunction()
 
 set(xyz_fields "x y z visibility_radius label feature_class")
@@ -189,82 +173,6 @@ file(APPEND "${labelled}" "${labelled_points}")
 expect_success(visfeat_label "${VISFEAT}" "${labelled}" "${WORK_DIR}/labelled_out.pcd"
                -resolution 8)
 expect_header("${WORK_DIR}/labelled_out.pcd" "${xyz_fields}" 150)
-
-# --- 3. Bad inputs -----------------------------------------------------------------
-set(bad_out "${WORK_DIR}/bad_out.pcd")
-expect_failure(missing_file "${bad_out}" "${VISFEAT}" "${WORK_DIR}/missing.pcd" "${bad_out}")
-
-configure_file("${cube}" "${WORK_DIR}/cube.xyz" COPYONLY)
-expect_failure(unknown_extension "${bad_out}" "${VISFEAT}" "${WORK_DIR}/cube.xyz" "${bad_out}")
-
-expect_failure(resolution_0 "${bad_out}" "${VISFEAT}" "${cube}" "${bad_out}" -resolution 0)
-expect_failure(resolution_text "${bad_out}" "${VISFEAT}" "${cube}" "${bad_out}" -resolution abc)
-expect_failure(threads_negative "${bad_out}" "${VISFEAT}" "${cube}" "${bad_out}" -threads -1)
-expect_failure(opacity_nan "${bad_out}" "${VISFEAT}" "${cube}" "${bad_out}" -opacity nan)
-expect_failure(unknown_option "${bad_out}" "${VISFEAT}" "${cube}" "${bad_out}" -resolutoin 64)
-expect_failure(missing_value "${bad_out}" "${VISFEAT}" "${cube}" "${bad_out}" -resolution)
-expect_failure(output_not_pcd "${WORK_DIR}/bad_out.ply" "${VISFEAT}" "${cube}"
-               "${WORK_DIR}/bad_out.ply")
-expect_failure(output_dir_missing "${WORK_DIR}/no/such/dir/out.pcd" "${VISFEAT}" "${cube}"
-               "${WORK_DIR}/no/such/dir/out.pcd")
-
-set(empty "${WORK_DIR}/empty.pcd")
-file(WRITE "${empty}" "# .PCD v0.7\nVERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\n"
-                      "COUNT 1 1 1\nWIDTH 0\nHEIGHT 1\nVIEWPOINT 0 0 0 1 0 0 0\nPOINTS 0\n"
-                      "DATA ascii\n")
-expect_failure(empty_pcd "${bad_out}" "${VISFEAT}" "${empty}" "${bad_out}")
-
-set(truncated "${WORK_DIR}/truncated.pcd")
-file(WRITE "${truncated}" "# .PCD v0.7\nVERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\n"
-                          "COUNT 1 1 1\nWIDTH 1000\nHEIGHT 1\nVIEWPOINT 0 0 0 1 0 0 0\n"
-                          "POINTS 1000\nDATA binary\nnot enough bytes")
-expect_failure(truncated_pcd "${bad_out}" "${VISFEAT}" "${truncated}" "${bad_out}")
-
-set(garbage "${WORK_DIR}/garbage.pcd")
-file(WRITE "${garbage}" "this is not a point cloud\n")
-expect_failure(garbage_pcd "${bad_out}" "${VISFEAT}" "${garbage}" "${bad_out}")
-
-set(zero "${WORK_DIR}/zero_bytes.pcd")
-file(WRITE "${zero}" "")
-expect_failure(zero_byte_pcd "${bad_out}" "${VISFEAT}" "${zero}" "${bad_out}")
-
-set(no_xyz "${WORK_DIR}/no_xyz.pcd")
-file(WRITE "${no_xyz}" "# .PCD v0.7\nVERSION 0.7\nFIELDS a b\nSIZE 4 4\nTYPE F F\nCOUNT 1 1\n"
-                       "WIDTH 1\nHEIGHT 1\nVIEWPOINT 0 0 0 1 0 0 0\nPOINTS 1\nDATA ascii\n1 2\n")
-expect_failure(no_xyz_fields "${bad_out}" "${VISFEAT}" "${no_xyz}" "${bad_out}")
-
-set(bad_ply "${WORK_DIR}/bad.ply")
-file(WRITE "${bad_ply}" "ply\nformat ascii 1.0\nelement vertex 5\nproperty float x\n")
-expect_failure(corrupt_ply "${bad_out}" "${VISFEAT}" "${bad_ply}" "${bad_out}")
-
-# A single point: no grid can be built; the estimator's own message must come through.
-set(single "${WORK_DIR}/single.pcd")
-file(WRITE "${single}" "# .PCD v0.7\nVERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\n"
-                       "COUNT 1 1 1\nWIDTH 1\nHEIGHT 1\nVIEWPOINT 0 0 0 1 0 0 0\nPOINTS 1\n"
-                       "DATA ascii\n1 2 3\n")
-expect_failure(single_point "${bad_out}" "${VISFEAT}" "${single}" "${bad_out}")
-
-# The -voxels file must not be left behind either.
-file(REMOVE "${WORK_DIR}/bad_cells.pcd")
-expect_failure(voxels_on_failure "${bad_out}" "${VISFEAT}" "${cube}" "${bad_out}"
-               -resolution 0 -voxels "${WORK_DIR}/bad_cells.pcd")
-if(EXISTS "${WORK_DIR}/bad_cells.pcd")
-  report_failure("voxels_on_failure: left bad_cells.pcd behind")
-endif()
-
-expect_failure(generate_unknown_shape "${WORK_DIR}/gen_bad.pcd" "${GENERATE}" dodecagon
-               "${WORK_DIR}/gen_bad.pcd")
-expect_failure(generate_bad_spacing "${WORK_DIR}/gen_bad.pcd" "${GENERATE}" cube
-               "${WORK_DIR}/gen_bad.pcd" -spacing -1)
-expect_failure(generate_truth_not_json "${WORK_DIR}/gen_bad.pcd" "${GENERATE}" cube
-               "${WORK_DIR}/gen_bad.pcd" -truth "${WORK_DIR}/gen_bad.txt")
-expect_failure(generate_truth_dir_missing "${WORK_DIR}/gen_bad.pcd" "${GENERATE}" cube
-               "${WORK_DIR}/gen_bad.pcd" -truth "${WORK_DIR}/no/such/dir/t.json")
-expect_failure(generate_truth_no_value "${WORK_DIR}/gen_bad.pcd" "${GENERATE}" cube
-               "${WORK_DIR}/gen_bad.pcd" -truth)
-if(EXISTS "${WORK_DIR}/gen_bad.txt")
-  report_failure("generate_truth_not_json: left gen_bad.txt behind")
-endif()
 
 file(GLOB leftovers "${WORK_DIR}/*.tmp")
 if(leftovers)

@@ -474,7 +474,8 @@ loadCloud(const std::string& path,
   orientation = Eigen::Quaternionf::Identity();
   const std::string ext = lowerExtension(path);
   if (ext != ".pcd" && ext != ".ply") {
-    error = "'" + path + "': unknown extension '" + ext + "' (expected .pcd or .ply)";
+    error = "'" + path + "': unknown extension '" + ext +
+            "' (expected .pcd, .ply, .obj or .off)";
     return false;
   }
   std::error_code ec;

@@ -2,6 +2,7 @@
 // tools/normal_estimation.cpp. Every input field survives; visibility_radius, label and
 // feature_class are added, and the result is written as binary compressed PCD.
 
+#include "tool_input.h"
 #include "tool_utils.h"
 
 #include <fstream>
@@ -33,7 +34,8 @@ namespace {
 
 const char* const kProgram = "visfeat";
 
-constexpr int kDefaultResolution = 256;
+// No default resolution: without -resolution it follows from the point spacing
+// (kSpacingsPerCell spacings per cell, tool_input.h).
 constexpr int kDefaultMinRadius = 16;
 constexpr int kDefaultVertexCells = 25;
 constexpr double kDefaultDimensionality = 3.5;
@@ -43,7 +45,7 @@ constexpr int kDefaultThreads = 0;
 void
 printHelp(const char* program)
 {
-  print_error("Syntax is: %s input.{pcd,ply} output.pcd <options>\n", program);
+  print_error("Syntax is: %s input.{pcd,ply,obj,off} output.pcd <options>\n", program);
   print_info(
     "  Labels every point with the visibility radius of its voxel-band cell (Chica et "
     "al.,\n"
@@ -52,11 +54,16 @@ printHelp(const char* program)
     "  every field of the input plus visibility_radius (float), label (uint32) and\n"
     "  feature_class (uint8: 0 none, 1 vertex, 2 edge, 3 face); an existing field of\n"
     "  one of these names is overwritten. label is the region id (0 = none).\n");
+  print_info(
+    "  A mesh (.obj, .off, or .ply with faces) is first sampled to a cloud: uniformly\n"
+    "  by area, with a fixed seed (the same mesh always gives the same cloud).\n");
   print_info("  where options are:\n");
   print_info("    -resolution N     = cells along the longest side of the "
              "bounding box (default: ");
-  print_value("%d", kDefaultResolution);
-  print_info(" cells; %d-%d)\n", visfeat::GridSpec::kMinResolution,
+  print_value("automatic");
+  print_info(": %g point spacings per cell, the spacing estimated from k-NN "
+             "distances; %d-%d cells)\n",
+             vt::kSpacingsPerCell, visfeat::GridSpec::kMinResolution,
              visfeat::GridSpec::kMaxResolution);
   print_info(
     "    -min_radius R     = cells with radius >= R form components (default: ");
@@ -96,6 +103,15 @@ printHelp(const char* program)
   print_info(
     "    -graph g.{dot,json} = also write the topology graph: GraphViz DOT, or JSON "
     "with the grid and every parameter\n");
+  print_info("    -mesh_points N    = mesh input: number of points to sample "
+             "(default: ");
+  print_value("%zu", vt::MeshDensity().points);
+  print_info(" points; 1-%zu)\n", vt::kMaxMeshPoints);
+  print_info(
+    "    -mesh_spacing S   = mesh input: sample area / S^2 points instead, S = "
+    "mean spacing (default: ");
+  print_value("unset");
+  print_info("; world units)\n");
   print_info("    -q                = quiet: errors only\n");
   print_info("  Outputs are written to a temporary file and renamed when complete.\n");
 }
@@ -168,7 +184,7 @@ private:
 
 struct Options
 {
-  int resolution = kDefaultResolution;
+  int resolution = 0; // 0 = automatic
   int min_radius = kDefaultMinRadius;
   int max_radius = 0; // 0 = min_radius
   int vertex_cells = kDefaultVertexCells;
@@ -181,6 +197,7 @@ struct Options
   long long memory_limit_mb = 0;
   std::string voxels;
   std::string graph;
+  vt::MeshDensity mesh;
   bool quiet = false;
 };
 
@@ -278,7 +295,8 @@ run(int argc, char** argv)
   const vt::Arguments args(argc, argv,
                            {"-resolution", "-max_radius", "-min_radius",
                             "-vertex_cells", "-dimensionality", "-opacity", "-threads",
-                            "-memory_limit_mb", "-voxels", "-graph"},
+                            "-memory_limit_mb", "-voxels", "-graph", "-mesh_points",
+                            "-mesh_spacing"},
                            {"-no_repair", "-raw", "-no_regions", "-q", "-h", "--help"});
   if (!args.ok())
     return fail(args.error());
@@ -294,7 +312,8 @@ run(int argc, char** argv)
       argv[0]);
 
   if (args.positional().size() != 2)
-    return fail("expected an input (.pcd or .ply) and an output (.pcd), got " +
+    return fail("expected an input (.pcd, .ply, .obj or .off) and an output (.pcd), "
+                "got " +
                 std::to_string(args.positional().size()) +
                 " file argument(s) (see -h)");
   const std::string input = args.positional()[0];
@@ -315,8 +334,16 @@ run(int argc, char** argv)
                     error) ||
       !args.getInteger("-threads", 0, visfeat::VisibilityMap::kMaxThreads, opt.threads,
                        error) ||
-      !args.getInteger("-memory_limit_mb", 0, 1LL << 40, opt.memory_limit_mb, error))
+      !args.getInteger("-memory_limit_mb", 0, 1LL << 40, opt.memory_limit_mb, error) ||
+      !args.getInteger("-mesh_points", 1, static_cast<long long>(vt::kMaxMeshPoints),
+                       opt.mesh.points, error) ||
+      !args.getReal("-mesh_spacing", -std::numeric_limits<double>::max(),
+                    std::numeric_limits<double>::max(), opt.mesh.spacing, error))
     return fail(error);
+  if (args.has("-mesh_spacing") && !(opt.mesh.spacing > 0.0))
+    return fail("-mesh_spacing must be positive, got " + args.value("-mesh_spacing"));
+  if (args.has("-mesh_spacing") && args.has("-mesh_points"))
+    return fail("give -mesh_points or -mesh_spacing, not both");
   opt.repair = !args.has("-no_repair");
   opt.raw = args.has("-raw");
   opt.regions = !args.has("-no_regions");
@@ -362,9 +389,12 @@ run(int argc, char** argv)
   print_highlight("Loading ");
   print_value("%s ", input.c_str());
   pcl::PCLPointCloud2 cloud;
-  Eigen::Vector4f origin;
-  Eigen::Quaternionf orientation;
-  if (!vt::loadCloud(input, cloud, origin, orientation, error)) {
+  Eigen::Vector4f origin = Eigen::Vector4f::Zero();
+  Eigen::Quaternionf orientation = Eigen::Quaternionf::Identity();
+  const bool mesh = vt::isMeshFile(input);
+  std::string summary;
+  if (mesh ? !vt::loadMeshAsCloud(input, opt.mesh, cloud, summary, error)
+           : !vt::loadCloud(input, cloud, origin, orientation, error)) {
     print_info("\n");
     return fail(error);
   }
@@ -373,6 +403,11 @@ run(int argc, char** argv)
   print_info(" ms : ");
   print_value("%zu", static_cast<std::size_t>(cloud.width) * cloud.height);
   print_info(" points]\n");
+  if (mesh)
+    print_info("%s\n", summary.c_str());
+  else if (args.has("-mesh_points") || args.has("-mesh_spacing"))
+    print_warn("-mesh_points / -mesh_spacing ignored: '%s' is a point cloud\n",
+               input.c_str());
   print_info("Available dimensions: ");
   print_value("%s\n", pcl::getFieldsList(cloud).c_str());
 
@@ -383,6 +418,9 @@ run(int argc, char** argv)
     return fail("'" + input + "': the cloud has no points");
   auto xyz = std::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
   vt::toXYZ(cloud, *xyz);
+  if (!vt::checkShapeAndResolution(input, *xyz, args.has("-resolution"), opt.resolution,
+                                   error))
+    return fail(error);
 
   // Compute.
   visfeat::VisibilityFeatureEstimation<pcl::PointXYZ, visfeat::PointVisibility>
