@@ -2,6 +2,7 @@
 // tools/normal_estimation.cpp. Every input field survives; visibility_radius, label and
 // feature_class are added, and the result is written as binary compressed PCD.
 
+#include "render_picture.h"
 #include "tool_utils.h"
 
 #include <fstream>
@@ -96,6 +97,7 @@ printHelp(const char* program)
   print_info(
     "    -graph g.{dot,json} = also write the topology graph: GraphViz DOT, or JSON "
     "with the grid and every parameter\n");
+  vt::printPictureHelp();
   print_info("    -q                = quiet: errors only\n");
   print_info("  Outputs are written to a temporary file and renamed when complete.\n");
 }
@@ -278,7 +280,8 @@ run(int argc, char** argv)
   const vt::Arguments args(argc, argv,
                            {"-resolution", "-max_radius", "-min_radius",
                             "-vertex_cells", "-dimensionality", "-opacity", "-threads",
-                            "-memory_limit_mb", "-voxels", "-graph"},
+                            "-memory_limit_mb", "-voxels", "-graph", "-png",
+                            "-png_radius", "-png_size"},
                            {"-no_repair", "-raw", "-no_regions", "-q", "-h", "--help"});
   if (!args.ok())
     return fail(args.error());
@@ -355,6 +358,9 @@ run(int argc, char** argv)
     if (opt.graph == output || opt.graph == opt.voxels)
       return fail("the -graph file must differ from the other outputs");
   }
+  vt::PictureRequests pictures;
+  if (!vt::parsePictureRequests(args, {output, opt.voxels, opt.graph}, pictures, error))
+    return fail(error);
 
   // Load.
   TicToc tt;
@@ -596,9 +602,26 @@ run(int argc, char** argv)
     print_value("%zu", graph.arcCount());
     print_info(" arcs]\n");
   }
-  for (const std::string& path : {output, opt.voxels, opt.graph})
+  std::vector<std::string> outputs_done{output, opt.voxels, opt.graph};
+  if (!pictures.paths().empty()) {
+    vt::PictureOptions picture; // see render_picture.h
+    picture.max_radius = opt.max_radius;
+    picture.cell_size = grid.cell_size;
+    picture.band_cells = band.size();
+    picture.title = vt::fs::path(input).filename().string();
+    if (!vt::writePictures(pictures, result, estimator.getTopologyGraph(), picture,
+                           error)) {
+      for (const std::string& path : outputs_done)
+        if (!path.empty())
+          vt::discardOutput(path);
+      return fail(error);
+    }
+    for (const std::string& path : pictures.paths())
+      outputs_done.push_back(path);
+  }
+  for (const std::string& path : outputs_done)
     if (!path.empty() && !vt::commitOutput(path, error)) {
-      for (const std::string& other : {output, opt.voxels, opt.graph})
+      for (const std::string& other : outputs_done)
         if (!other.empty())
           vt::discardOutput(other);
       return fail(error);
