@@ -425,14 +425,19 @@ renderPicture(const pcl::PointCloud<visfeat::PointVisibility>& cloud,
   // The points, one actor per class so that edges and vertices can be drawn larger.
   auto lut = vtkSmartPointer<vtkLookupTable>::New();
   const int max_radius = std::max(options.max_radius, 1);
+  // The ramp runs from the smallest radius present (blue) to the cap (red), as in the
+  // paper's Figure 3, one colour per ring count.
+  int min_radius = max_radius;
+  for (const auto& p : cloud)
+    if (std::isfinite(p.visibility_radius))
+      min_radius = std::min(min_radius, static_cast<int>(p.visibility_radius));
+  min_radius = std::clamp(min_radius, 0, max_radius - 1);
   if (options.mode == PictureMode::kRadius) {
-    // One colour per ring count 0..max_radius, blue (0) to red (max_radius) as in the
-    // paper's Figure 3.
-    lut->SetNumberOfTableValues(max_radius + 1);
+    lut->SetNumberOfTableValues(max_radius - min_radius + 1);
     lut->SetHueRange(0.6667, 0.0);
     lut->SetSaturationRange(1.0, 1.0);
     lut->SetValueRange(1.0, 1.0);
-    lut->SetTableRange(0.0, max_radius);
+    lut->SetTableRange(min_radius, max_radius);
     lut->Build();
   }
   std::vector<pcl::PointCloud<pcl::PointXYZRGB>::Ptr> layers(4);
@@ -452,7 +457,8 @@ renderPicture(const pcl::PointCloud<visfeat::PointVisibility>& cloud,
     if (options.mode == PictureMode::kRadius) {
       if (std::isfinite(p.visibility_radius)) {
         double rgb[3];
-        lut->GetColor(std::clamp<double>(p.visibility_radius, 0.0, max_radius), rgb);
+        lut->GetColor(std::clamp<double>(p.visibility_radius, min_radius, max_radius),
+                      rgb);
         c = Rgb{static_cast<std::uint8_t>(std::lround(255 * rgb[0])),
                 static_cast<std::uint8_t>(std::lround(255 * rgb[1])),
                 static_cast<std::uint8_t>(std::lround(255 * rgb[2]))};
@@ -553,7 +559,8 @@ renderPicture(const pcl::PointCloud<visfeat::PointVisibility>& cloud,
     auto bar = vtkSmartPointer<vtkScalarBarActor>::New();
     bar->SetLookupTable(lut);
     bar->SetTitle("rings");
-    bar->SetNumberOfLabels(std::min(max_radius, 8) + 1);
+    const int span = max_radius - min_radius;
+    bar->SetNumberOfLabels(span <= 8 ? span + 1 : (span % 2 == 0 ? span / 2 + 1 : 5));
     bar->SetLabelFormat("%.0f");
     bar->SetOrientationToVertical();
     bar->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
@@ -571,7 +578,8 @@ renderPicture(const pcl::PointCloud<visfeat::PointVisibility>& cloud,
     }
     renderer->AddActor2D(bar);
     addLegendLine(viewer,
-                  "visibility radius (red = cap " + std::to_string(max_radius) + ")",
+                  "visibility radius: blue = smallest (" + std::to_string(min_radius) +
+                    " rings), red = cap (" + std::to_string(max_radius) + " rings)",
                   legend_y, Rgb{60, 60, 60}, "legend_radius");
   }
   if (!options.title.empty())
@@ -628,8 +636,9 @@ printPictureHelp()
   using namespace pcl::console;
   print_info("    -png out.png      = also render a picture: vertices red, edges blue, "
              "faces pastel, with the topology graph\n");
-  print_info("    -png_radius out.png = also render the visibility map (blue = small "
-             "radius, red = max_radius)\n");
+  print_info(
+    "    -png_radius out.png = also render the visibility map (blue = smallest "
+    "radius, red = max_radius)\n");
   print_info("    -png_size WxH     = size of the pictures (default: ");
   print_value("1024x768");
   print_info(" pixels)\n");
