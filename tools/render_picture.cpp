@@ -422,7 +422,6 @@ renderPicture(const pcl::PointCloud<visfeat::PointVisibility>& cloud,
   viewer.setBackgroundColor(1.0, 1.0, 1.0);
   viewer.setSize(options.width, options.height);
 
-  // The points, one actor per class so that edges and vertices can be drawn larger.
   auto lut = vtkSmartPointer<vtkLookupTable>::New();
   const int max_radius = std::max(options.max_radius, 1);
   // The ramp runs from the smallest radius present (blue) to the cap (red), as in the
@@ -440,10 +439,10 @@ renderPicture(const pcl::PointCloud<visfeat::PointVisibility>& cloud,
     lut->SetTableRange(min_radius, max_radius);
     lut->Build();
   }
+  // The points, one actor per class so that edges and vertices can be drawn larger.
   std::vector<pcl::PointCloud<pcl::PointXYZRGB>::Ptr> layers(4);
   for (auto& layer : layers)
     layer.reset(new pcl::PointCloud<pcl::PointXYZRGB>);
-  // Face region label -> palette index, in order of first appearance of the face id.
   for (const auto& p : cloud) {
     if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
       continue;
