@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # End-to-end demo: builds visfeat (Release, build/), generates a sample cloud of a box
 # with a cylindrical through-hole (8 corners, 12 straight and 2 circular edges, 7
-# faces), labels its vertices, edges and faces, writes the topology graph, and tells
-# how to look at the result.
+# faces), labels its vertices, edges and faces, writes the topology graph, renders
+# pictures of the result, and tells how to look at it.
 #   scripts/demo.sh [OUTPUT_DIR]     (default: demo_output)
 set -euo pipefail
 
@@ -30,8 +30,18 @@ echo "== label sharp features"
 "$build_dir/tools/visfeat" "$out/$model.pcd" "$out/${model}_labeled.pcd" \
   -resolution "$resolution" -voxels "$out/${model}_cells.pcd" \
   -graph "$out/${model}_graph.json"
-"$build_dir/tools/visfeat" "$out/$model.pcd" "$out/${model}_labeled.pcd" \
-  -resolution "$resolution" -graph "$out/${model}_graph.dot" -q
+# The same run again for the DOT graph and the pictures. VTK (Debian's is built for
+# X only) needs a display even to render offscreen: the caller's, else a private
+# virtual one (xvfb-run, installed by install_deps.sh).
+display_cmd=()
+if [ -z "${DISPLAY:-}" ]; then
+  display_cmd=(xvfb-run -a)
+fi
+"${display_cmd[@]}" "$build_dir/tools/visfeat" "$out/$model.pcd" \
+  "$out/${model}_labeled.pcd" -resolution "$resolution" -q \
+  -graph "$out/${model}_graph.dot" \
+  -png "$out/${model}.png" -png_radius "$out/${model}_radius.png"
+echo "== pictures: $out/${model}.png $out/${model}_radius.png"
 
 cat <<MSG
 
@@ -43,6 +53,9 @@ Outputs:
   $out/${model}_cells.pcd     one point per voxel-band cell, same fields
   $out/${model}_graph.json    topology graph (regions, arcs, grid, parameters)
   $out/${model}_graph.dot     the same graph for GraphViz (dot -Tpng)
+  $out/${model}.png           picture: vertices red, edges blue, faces pastel, with the
+                                  topology graph (spheres at region centroids, arcs)
+  $out/${model}_radius.png    picture: visibility radius, blue (small) to red (cap)
 
 View them with:
   pcl_viewer $out/${model}_labeled.pcd

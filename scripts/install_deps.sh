@@ -2,6 +2,8 @@
 # Installs the Debian/Ubuntu packages visfeat needs to build, test and run its demo.
 # Only packages that are missing are installed; apt-get update runs only then.
 # OpenMP: GCC's runtime (libgomp) comes with the compiler, so libomp-dev is not needed.
+# xvfb + xauth: the tool's pictures (-png) render with VTK, which on Debian needs an X
+# display even offscreen; headless machines (CI, the demo) run it under xvfb-run.
 set -euo pipefail
 
 packages=(
@@ -13,6 +15,8 @@ packages=(
   libboost-graph-dev
   libgtest-dev
   libbenchmark-dev
+  xvfb
+  xauth
 )
 
 installed() {

@@ -3,6 +3,7 @@
 // feature_class are added, and the result is written as binary compressed PCD.
 
 #include "tool_input.h"
+#include "render_picture.h"
 #include "tool_utils.h"
 
 #include <fstream>
@@ -112,6 +113,7 @@ printHelp(const char* program)
     "mean spacing (default: ");
   print_value("unset");
   print_info("; world units)\n");
+  vt::printPictureHelp();
   print_info("    -q                = quiet: errors only\n");
   print_info("  Outputs are written to a temporary file and renamed when complete.\n");
 }
@@ -296,7 +298,7 @@ run(int argc, char** argv)
                            {"-resolution", "-max_radius", "-min_radius",
                             "-vertex_cells", "-dimensionality", "-opacity", "-threads",
                             "-memory_limit_mb", "-voxels", "-graph", "-mesh_points",
-                            "-mesh_spacing"},
+                            "-mesh_spacing", "-png", "-png_radius", "-png_size"},
                            {"-no_repair", "-raw", "-no_regions", "-q", "-h", "--help"});
   if (!args.ok())
     return fail(args.error());
@@ -382,6 +384,9 @@ run(int argc, char** argv)
     if (opt.graph == output || opt.graph == opt.voxels)
       return fail("the -graph file must differ from the other outputs");
   }
+  vt::PictureRequests pictures;
+  if (!vt::parsePictureRequests(args, {output, opt.voxels, opt.graph}, pictures, error))
+    return fail(error);
 
   // Load.
   TicToc tt;
@@ -638,9 +643,26 @@ run(int argc, char** argv)
     print_value("%zu", graph.arcCount());
     print_info(" arcs]\n");
   }
-  for (const std::string& path : {output, opt.voxels, opt.graph})
+  std::vector<std::string> outputs_done{output, opt.voxels, opt.graph};
+  if (!pictures.paths().empty()) {
+    vt::PictureOptions picture; // see render_picture.h
+    picture.max_radius = opt.max_radius;
+    picture.cell_size = grid.cell_size;
+    picture.band_cells = band.size();
+    picture.title = vt::fs::path(input).filename().string();
+    if (!vt::writePictures(pictures, result, estimator.getTopologyGraph(), picture,
+                           error)) {
+      for (const std::string& path : outputs_done)
+        if (!path.empty())
+          vt::discardOutput(path);
+      return fail(error);
+    }
+    for (const std::string& path : pictures.paths())
+      outputs_done.push_back(path);
+  }
+  for (const std::string& path : outputs_done)
     if (!path.empty() && !vt::commitOutput(path, error)) {
-      for (const std::string& other : {output, opt.voxels, opt.graph})
+      for (const std::string& other : outputs_done)
         if (!other.empty())
           vt::discardOutput(other);
       return fail(error);

@@ -1,0 +1,114 @@
+// Pictures of a classified cloud for the visfeat tool (-png, -png_radius): the points
+// coloured by class (vertex / edge / face) with the topology graph drawn over them, or
+// by visibility radius on a blue-to-red ramp (the paper's Figure 3). Not installed, not
+// public API; the only part of visfeat that needs PCL's visualization module (VTK).
+//
+// Rendering is offscreen through pcl::visualization::PCLVisualizer. Debian's VTK 9 is
+// built for X only (no OSMesa, no EGL), so even offscreen it needs an X display: a
+// headless machine runs the tool under `xvfb-run -a` (package xvfb).
+#pragma once
+
+#include "tool_utils.h"
+
+#include <visfeat/point_types.h>
+#include <visfeat/topology_graph.h>
+
+#include <pcl/point_cloud.h>
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace visfeat_tools {
+
+/** \brief What a picture shows. */
+enum class PictureMode
+{
+  /** \brief Vertices red, edges blue, faces in pastel colours (one per face region),
+   * and the topology graph: spheres at the region centroids, arcs between them. */
+  kClasses,
+  /** \brief visibility_radius on a blue (0) to red (max_radius) ramp, with a scalar
+   * bar. */
+  kRadius
+};
+
+/** \brief Parameters of renderPicture(). */
+struct PictureOptions
+{
+  PictureMode mode = PictureMode::kClasses;
+  /** \brief Image size in pixels. Range [kMinSize, kMaxSize]. */
+  int width = 1024;
+  int height = 768;
+  /** \brief Upper end of the radius ramp, in rings (the tool's max_radius). */
+  int max_radius = 16;
+  /** \brief Cell size of the band's grid (world units) and number of band cells, for
+   * the point spacing estimate that sizes the points on screen. */
+  double cell_size = 0.0;
+  std::size_t band_cells = 0;
+  /** \brief One line of text in the top left corner (e.g. the input file name). */
+  std::string title;
+
+  static constexpr int kMinSize = 64;
+  static constexpr int kMaxSize = 8192;
+};
+
+/** \brief True when this build of the tool can render pictures (PCL's visualization
+ * module was found at configure time). */
+bool picturesCompiledIn();
+
+/** \brief Check, before any work, that pictures can be rendered here: compiled in and
+ * an X display can be opened. On failure `error` is one line saying how to fix it. */
+bool checkPictureSupport(std::string& error);
+
+/** \brief Parse "WxH" (e.g. "800x600") into width and height, each in
+ * [PictureOptions::kMinSize, PictureOptions::kMaxSize]. */
+bool
+parsePictureSize(const std::string& text, int& width, int& height, std::string& error);
+
+/** \brief Render `cloud` (the estimator's output) with `graph` as a PNG written to
+ * `file` (any name; the tool passes its temporary name). Returns false with a one-line
+ * `error` when rendering or writing fails; a partial file is removed. */
+bool renderPicture(const pcl::PointCloud<visfeat::PointVisibility>& cloud,
+                   const visfeat::TopologyGraph& graph,
+                   const PictureOptions& options,
+                   const std::string& file,
+                   std::string& error);
+
+/** \brief The tool's picture options: -png, -png_radius, -png_size. */
+struct PictureRequests
+{
+  /** \brief -png: classes and graph; "" = none. */
+  std::string classes;
+  /** \brief -png_radius: the visibility map; "" = none. */
+  std::string radius;
+  int width = 1024;
+  int height = 768;
+
+  /** \brief The requested files (0, 1 or 2). */
+  std::vector<std::string> paths() const;
+};
+
+/** \brief The option names for vt::Arguments (all take a value). */
+const std::vector<std::string>& pictureOptionNames();
+
+/** \brief Print the help lines of the picture options. */
+void printPictureHelp();
+
+/** \brief Read and check the picture options before any work: .png names, writable,
+ * different from each other and from `other_outputs`, and rendering possible here
+ * (checkPictureSupport). On failure `error` is one line. */
+bool parsePictureRequests(const Arguments& args,
+                          const std::vector<std::string>& other_outputs,
+                          PictureRequests& requests,
+                          std::string& error);
+
+/** \brief Render the requested pictures to their temporary names
+ * (temporaryPath(path)), printing a "Rendering ..." line; commitOutput() moves them
+ * into place. On failure no temporary file is left and `error` is one line. */
+bool writePictures(const PictureRequests& requests,
+                   const pcl::PointCloud<visfeat::PointVisibility>& cloud,
+                   const visfeat::TopologyGraph& graph,
+                   PictureOptions options,
+                   std::string& error);
+
+} // namespace visfeat_tools
