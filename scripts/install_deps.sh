@@ -2,9 +2,28 @@
 # Installs the Debian/Ubuntu packages visfeat needs to build, test and run its demo.
 # Only packages that are missing are installed; apt-get update runs only then.
 # OpenMP: GCC's runtime (libgomp) comes with the compiler, so libomp-dev is not needed.
+#
+#   scripts/install_deps.sh           the build, test and demo dependencies
+#   scripts/install_deps.sh --peers   also libcgal-dev, for the optional CGAL peer of
+#                                     visfeat_eval (visfeat itself never needs CGAL)
 # xvfb + xauth: the tool's pictures (-png) render with VTK, which on Debian needs an X
 # display even offscreen; headless machines (CI, the demo) run it under xvfb-run.
 set -euo pipefail
+
+with_peers=0
+for arg in "$@"; do
+  case "$arg" in
+    --peers) with_peers=1 ;;
+    -h | --help)
+      sed -n '2,8p' "$0" | sed 's/^# \{0,1\}//'
+      exit 0
+      ;;
+    *)
+      echo "install_deps: unknown argument '$arg' (known: --peers)" >&2
+      exit 1
+      ;;
+  esac
+done
 
 packages=(
   build-essential
@@ -18,6 +37,9 @@ packages=(
   xvfb
   xauth
 )
+if [ "$with_peers" -eq 1 ]; then
+  packages+=(libcgal-dev)
+fi
 
 installed() {
   # 'dpkg -s' also succeeds for removed packages whose config files remain.

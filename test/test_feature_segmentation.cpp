@@ -6,6 +6,7 @@
 
 #include <visfeat/cad_models.h>
 #include <visfeat/error.h>
+#include <visfeat/evaluation.h>
 #include <visfeat/feature_segmentation.h>
 #include <visfeat/synthetic_shapes.h>
 #include <visfeat/topology_graph.h>
@@ -22,6 +23,7 @@
 namespace {
 
 using visfeat::FeatureClass;
+namespace evaluation = visfeat::evaluation;
 namespace synthetic = visfeat::synthetic;
 
 struct PipelineRun
@@ -75,20 +77,28 @@ caseName(const testing::TestParamInfo<Case>& info)
 void
 expectFeaturePointsHugTheTrueCurves(const PipelineRun& run)
 {
-  std::size_t labeled = 0, labeled_near = 0, near = 0, near_labeled = 0;
+  std::vector<std::uint8_t> feature(run.output.size());
+  std::vector<double> distance(run.output.size());
   for (std::size_t i = 0; i < run.output.size(); ++i) {
     const auto cls = static_cast<FeatureClass>(run.output[i].feature_class);
-    const bool feature = cls == FeatureClass::kEdge || cls == FeatureClass::kVertex;
-    const double d = run.samples.curve_distance[i] / run.cell;
-    labeled += feature;
-    labeled_near += feature && d <= 2.0;
-    near += d <= 1.0;
-    near_labeled += feature && d <= 1.0;
+    feature[i] = cls == FeatureClass::kEdge || cls == FeatureClass::kVertex;
+    distance[i] = run.samples.curve_distance[i] / run.cell;
   }
-  ASSERT_GT(labeled, 0u);
-  ASSERT_GT(near, 0u);
-  EXPECT_GE(double(labeled_near) / double(labeled), 0.95) << "precision (2 cells)";
-  EXPECT_GE(double(near_labeled) / double(near), 0.90) << "recall (1 cell)";
+  const evaluation::PointScores scores =
+    evaluation::scoreFeaturePoints(feature, distance);
+  ASSERT_GT(scores.labeled, 0u);
+  ASSERT_GT(scores.near, 0u);
+  EXPECT_GE(scores.precision(), 0.95) << "precision (2 cells)";
+  EXPECT_GE(scores.recall(), 0.90) << "recall (1 cell)";
+}
+
+std::string
+joinLines(const std::vector<std::string>& lines)
+{
+  std::string text;
+  for (const auto& line : lines)
+    text += "\n  " + line;
+  return text;
 }
 
 class ExactTopology : public testing::TestWithParam<Case>
@@ -106,93 +116,26 @@ TEST_P(ExactTopology, CountsMatchTheTruth)
   for (const auto& p : run.output.points)
     ASSERT_NE(p.label, 0u);
 
-  // Which region is which true curve: the majority of the nearest-curve votes of its
-  // edge points; which region is which true vertex: the vertex region holding most
-  // points within 3 cells of it.
-  const synthetic::CadModel& model = run.model;
-  std::map<std::uint32_t, std::map<int, std::size_t>> curve_votes;
-  std::vector<std::map<std::uint32_t, std::size_t>> vertex_votes(model.vertices.size());
+  // Regions matched to the true curves, vertices and faces (evaluation.h says how);
+  // every curve's region links exactly the regions of its two faces and of its end
+  // vertices (none for a circle).
+  std::vector<std::uint32_t> labels(run.output.size());
+  std::vector<std::uint8_t> classes(run.output.size());
   for (std::size_t i = 0; i < run.output.size(); ++i) {
-    const auto& q = run.output[i];
-    const Eigen::Vector3d p = run.samples.points[i].cast<double>();
-    if (q.feature_class == static_cast<std::uint8_t>(FeatureClass::kEdge)) {
-      int nearest = -1;
-      double best = std::numeric_limits<double>::infinity();
-      for (std::size_t c = 0; c < model.curves.size(); ++c) {
-        const double d = synthetic::curveDistance(model, static_cast<int>(c), p);
-        if (d < best) {
-          best = d;
-          nearest = static_cast<int>(c);
-        }
-      }
-      ++curve_votes[q.label][nearest];
-    }
-    if (q.feature_class == static_cast<std::uint8_t>(FeatureClass::kVertex))
-      for (std::size_t v = 0; v < model.vertices.size(); ++v)
-        if ((p - model.vertices[v]).norm() <= 3.0 * run.cell)
-          ++vertex_votes[v][q.label];
+    labels[i] = run.output[i].label;
+    classes[i] = run.output[i].feature_class;
   }
-  auto majority = [](const auto& votes) {
-    auto best = votes.begin();
-    for (auto it = votes.begin(); it != votes.end(); ++it)
-      if (it->second > best->second)
-        best = it;
-    return best->first;
-  };
-  std::map<int, std::uint32_t> region_of_curve;
-  for (const auto& [region, votes] : curve_votes) {
-    const int curve = majority(votes);
-    EXPECT_EQ(region_of_curve.count(curve), 0u)
-      << "two edge regions claim curve " << curve;
-    region_of_curve[curve] = region;
-  }
-  ASSERT_EQ(region_of_curve.size(), model.curves.size())
-    << "every true curve has a region";
-  std::vector<std::uint32_t> region_of_vertex(model.vertices.size(), 0);
-  for (std::size_t v = 0; v < model.vertices.size(); ++v) {
-    ASSERT_FALSE(vertex_votes[v].empty()) << "no vertex region at true vertex " << v;
-    region_of_vertex[v] = majority(vertex_votes[v]);
-  }
-  // Which region is which true face: the majority region of the face-labeled points
-  // sampled from it.
-  std::vector<std::map<std::uint32_t, std::size_t>> face_votes(model.faces.size());
-  for (std::size_t i = 0; i < run.output.size(); ++i)
-    if (run.output[i].feature_class == static_cast<std::uint8_t>(FeatureClass::kFace))
-      ++face_votes[static_cast<std::size_t>(run.samples.face[i])][run.output[i].label];
-  std::vector<std::uint32_t> region_of_face(model.faces.size(), 0);
-  for (std::size_t f = 0; f < model.faces.size(); ++f) {
-    ASSERT_FALSE(face_votes[f].empty()) << "no face region on true face " << f;
-    region_of_face[f] = majority(face_votes[f]);
-  }
-  for (std::size_t c = 0; c < model.curves.size(); ++c) {
-    std::vector<std::uint32_t> faces{
-      region_of_face[static_cast<std::size_t>(model.curves[c].faces[0])],
-      region_of_face[static_cast<std::size_t>(model.curves[c].faces[1])]};
-    std::sort(faces.begin(), faces.end());
-    EXPECT_EQ(run.graph.facesOfEdge(region_of_curve[static_cast<int>(c)]), faces)
-      << "faces of the region of true curve " << c;
-  }
-
-  for (std::size_t c = 0; c < model.curves.size(); ++c) {
-    const auto& curve = model.curves[c];
-    std::vector<std::uint32_t> expected;
-    if (curve.kind == synthetic::CadCurve::Kind::kSegment)
-      expected = {region_of_vertex[static_cast<std::size_t>(curve.vertices[0])],
-                  region_of_vertex[static_cast<std::size_t>(curve.vertices[1])]};
-    std::sort(expected.begin(), expected.end());
-    EXPECT_EQ(run.graph.verticesOfEdge(region_of_curve[static_cast<int>(c)]), expected)
-      << "vertices of the region of true curve " << c;
-  }
-  // Every corner is linked to exactly the faces it lies on.
-  const std::vector<std::vector<int>> faces_of_vertex = synthetic::vertexFaces(model);
-  for (std::size_t v = 0; v < model.vertices.size(); ++v) {
-    std::vector<std::uint32_t> expected;
-    for (const int f : faces_of_vertex[v])
-      expected.push_back(region_of_face[static_cast<std::size_t>(f)]);
-    std::sort(expected.begin(), expected.end());
-    EXPECT_EQ(run.graph.neighbours(region_of_vertex[v], FeatureClass::kFace), expected)
-      << "faces of the region of true vertex " << v;
-  }
+  const evaluation::TopologyComparison comparison =
+    evaluation::compareTopology(run.model, run.samples.points, run.samples.face, labels,
+                                classes, run.graph, run.cell);
+  EXPECT_TRUE(comparison.countsExact()) << joinLines(comparison.problems);
+  EXPECT_EQ(comparison.curves_matched, run.model.curves.size());
+  EXPECT_EQ(comparison.vertices_matched, run.model.vertices.size());
+  EXPECT_EQ(comparison.faces_matched, run.model.faces.size());
+  EXPECT_EQ(comparison.curves_linked, run.model.curves.size());
+  EXPECT_EQ(comparison.vertices_linked, run.model.vertices.size())
+    << "every corner links exactly its faces";
+  EXPECT_TRUE(comparison.exact()) << joinLines(comparison.problems);
 
   // Complete regions hug the curves.
   expectFeaturePointsHugTheTrueCurves(run);
