@@ -288,13 +288,18 @@ thinFeatureRegions(const VoxelBand& band,
         if (c == kNoCell)
           continue;
         const std::uint32_t l = labels[static_cast<std::size_t>(c)];
-        if (l != vertex && l != e && isFeature(l))
+        const bool sibling =
+          std::find(edges.begin(), edges.end(), l) != edges.end() && l != e;
+        if (l != vertex && l != e && isFeature(l) && !sibling)
           continue; // another feature's cell stays its own
+        // Edges of one corner converge: a cell on another edge's skeleton is where
+        // they meet, and joins the vertex; the rest of its region yields.
+        const bool meeting = sibling && skeleton[static_cast<std::size_t>(c)];
         const bool first = !skeleton[static_cast<std::size_t>(c)] ||
                            std::isnan(centres[static_cast<std::size_t>(c)].x());
         skeleton[static_cast<std::size_t>(c)] = 1;
         labels[static_cast<std::size_t>(c)] =
-          (x - corner).norm() <= kCornerCells ? vertex : e;
+          meeting || (x - corner).norm() <= kCornerCells ? vertex : e;
         const Eigen::Vector3d at = band.coord(c).cast<double>();
         if (first ||
             (x - at).norm() < (centres[static_cast<std::size_t>(c)].cast<double>() -

@@ -37,14 +37,20 @@ struct PipelineRun
 };
 
 PipelineRun
-runPipeline(const std::string& name, std::uint64_t seed, int resolution = 256)
+runPipeline(const std::string& name,
+            std::uint64_t seed,
+            int resolution = 256,
+            double noise_cells = 0.0,
+            std::uint64_t rotation = 0)
 {
   PipelineRun run;
-  run.model = synthetic::rotated(synthetic::cadModelByName(name),
-                                 synthetic::randomRotation(seed * 101));
+  run.model = synthetic::rotated(
+    synthetic::cadModelByName(name),
+    synthetic::randomRotation(rotation != 0 ? rotation : seed * 101));
   synthetic::SamplingOptions options;
   options.count = synthetic::samplesForSpacing(run.model, resolution, 0.5);
   options.seed = seed;
+  options.noise_sigma = noise_cells * synthetic::cellSize(run.model, resolution);
   run.samples = synthetic::sampleCadModel(run.model, options);
   auto cloud = std::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
   for (const auto& p : run.samples.points)
@@ -52,10 +58,14 @@ runPipeline(const std::string& name, std::uint64_t seed, int resolution = 256)
   visfeat::VisibilityFeatureEstimation<pcl::PointXYZ, visfeat::PointVisibility> est;
   est.setInputCloud(cloud);
   est.setResolution(resolution);
+  est.setNoiseMode(noise_cells > 0.0);
   est.compute(run.output);
   EXPECT_EQ(est.getErrorMessage(), "");
   run.counts = est.getSegmentation().classCounts();
-  run.cell = est.getGrid().cell_size;
+  // The nominal cell the noise and the tolerances refer to (a noisy cloud's own grid
+  // is slightly coarser).
+  run.cell = noise_cells > 0.0 ? synthetic::cellSize(run.model, resolution)
+                               : est.getGrid().cell_size;
   run.graph = est.getTopologyGraph();
   return run;
 }
@@ -64,12 +74,16 @@ struct Case
 {
   const char* model;
   std::uint64_t seed;
+  /** Rotation seed; 0 = seed * 101. */
+  std::uint64_t rotation = 0;
 };
 
 std::string
 caseName(const testing::TestParamInfo<Case>& info)
 {
-  return std::string(info.param.model) + "_seed" + std::to_string(info.param.seed);
+  return std::string(info.param.model) + "_seed" + std::to_string(info.param.seed) +
+         (info.param.rotation != 0 ? "_rotation" + std::to_string(info.param.rotation)
+                                   : "");
 }
 
 // At least 95% of the points labeled edge or vertex lie within 2 cells of a true sharp
@@ -106,7 +120,8 @@ class ExactTopology : public testing::TestWithParam<Case>
 
 TEST_P(ExactTopology, CountsMatchTheTruth)
 {
-  const PipelineRun run = runPipeline(GetParam().model, GetParam().seed);
+  const PipelineRun run =
+    runPipeline(GetParam().model, GetParam().seed, 256, 0.0, GetParam().rotation);
   ASSERT_EQ(run.output.size(), run.samples.points.size());
   EXPECT_EQ(run.counts[1], run.model.vertices.size()) << "vertex regions";
   EXPECT_EQ(run.counts[2], run.model.curves.size()) << "edge regions";
@@ -167,8 +182,76 @@ INSTANTIATE_TEST_SUITE_P(Models,
                                          Case{"box_with_hole", 3},
                                          Case{"cylinder", 1},
                                          Case{"cylinder", 2},
-                                         Case{"cylinder", 3}),
+                                         Case{"cylinder", 3},
+                                         // visfeat_generate icosahedron -seed 1: the
+                                         // README's picture (edges of one corner
+                                         // crossing near it once lost an arc)
+                                         Case{"icosahedron", 1, 1}),
                          caseName);
+
+// Noise mode (smoothing 2 cells, feature points within 1.5 cells) on noisy clouds,
+// rotation seed 1: exact counts and arcs, and per-point F1 >= 0.95 where measured so.
+// Not yet, tracked in the noise issue: u_prism (the two corners of a short edge merge
+// at 0.22 and 0.32), the icosahedron at 0.32 (32 edges for 30), F1 on the cylinder
+// (0.92: recall 0.87 on its circles) and on the tetrahedron at 0.32 (0.948).
+struct NoisyCase
+{
+  const char* model;
+  double sigma;
+  bool f1;
+};
+
+class NoiseMode : public testing::TestWithParam<NoisyCase>
+{};
+
+TEST_P(NoiseMode, RecoversTheTopology)
+{
+  const NoisyCase& c = GetParam();
+  const PipelineRun run = runPipeline(c.model, 1, 256, c.sigma);
+  std::vector<std::uint32_t> labels(run.output.size());
+  std::vector<std::uint8_t> classes(run.output.size());
+  std::vector<std::uint8_t> feature(run.output.size());
+  std::vector<double> distance(run.output.size());
+  for (std::size_t i = 0; i < run.output.size(); ++i) {
+    labels[i] = run.output[i].label;
+    classes[i] = run.output[i].feature_class;
+    const auto cls = static_cast<FeatureClass>(classes[i]);
+    feature[i] = cls == FeatureClass::kEdge || cls == FeatureClass::kVertex;
+    distance[i] = run.samples.curve_distance[i] / run.cell;
+  }
+  const evaluation::TopologyComparison comparison =
+    evaluation::compareTopology(run.model, run.samples.points, run.samples.face, labels,
+                                classes, run.graph, run.cell);
+  EXPECT_TRUE(comparison.exact()) << joinLines(comparison.problems);
+  const evaluation::PointScores scores =
+    evaluation::scoreFeaturePoints(feature, distance);
+  if (c.f1) {
+    EXPECT_GE(scores.f1(), 0.95)
+      << "precision " << scores.precision() << ", recall " << scores.recall();
+  }
+}
+
+std::string
+noisyCaseName(const testing::TestParamInfo<NoisyCase>& info)
+{
+  return std::string(info.param.model) + "_sigma" +
+         std::to_string(static_cast<int>(std::lround(info.param.sigma * 100)));
+}
+
+INSTANTIATE_TEST_SUITE_P(Models,
+                         NoiseMode,
+                         testing::Values(NoisyCase{"cube", 0.22, true},
+                                         NoisyCase{"cube", 0.32, true},
+                                         NoisyCase{"tetrahedron", 0.22, true},
+                                         NoisyCase{"tetrahedron", 0.32, false},
+                                         NoisyCase{"icosahedron", 0.22, true},
+                                         NoisyCase{"triangular_prism", 0.22, true},
+                                         NoisyCase{"triangular_prism", 0.32, true},
+                                         NoisyCase{"box_with_hole", 0.22, true},
+                                         NoisyCase{"box_with_hole", 0.32, true},
+                                         NoisyCase{"cylinder", 0.22, false},
+                                         NoisyCase{"cylinder", 0.32, false}),
+                         noisyCaseName);
 
 TEST(RawMode, KeepsThePapersLiteralComponents)
 {

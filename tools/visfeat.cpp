@@ -2,8 +2,8 @@
 // tools/normal_estimation.cpp. Every input field survives; visibility_radius, label and
 // feature_class are added, and the result is written as binary compressed PCD.
 
-#include "tool_input.h"
 #include "render_picture.h"
+#include "tool_input.h"
 #include "tool_utils.h"
 
 #include <fstream>
@@ -88,7 +88,17 @@ printHelp(const char* program)
   print_info("    -opacity D        = blocked length tolerated between two "
              "cells (default: ");
   print_value("%g", kDefaultOpacity);
-  print_info(" cell edges = exact; ~3 for noisy scans)\n");
+  print_info(" cell edges = exact; the paper's ~3 for noise)\n");
+  print_info("    -noise_mode       = noisy scans (Gaussian noise up to ~0.5 cell): "
+             "-smooth 2, feature points within 1.5 cells of a curve (default: ");
+  print_value("off");
+  print_info(")\n");
+  print_info("    -smooth R         = project every point onto the plane of its "
+             "neighbours within R cells first (default: ");
+  print_value("0");
+  print_info(" = off, ");
+  print_value("2");
+  print_info(" with -noise_mode; 0-8 cells)\n");
   print_info("    -threads T        = threads of the visibility map (default: ");
   print_value("%d", kDefaultThreads);
   print_info(" = all)\n");
@@ -194,6 +204,8 @@ struct Options
   bool raw = false;
   bool regions = true;
   double opacity = kDefaultOpacity;
+  bool noise_mode = false;
+  double smooth = -1.0; // -1 = as the mode says
   int threads = kDefaultThreads;
   bool repair = true;
   long long memory_limit_mb = 0;
@@ -294,17 +306,18 @@ printHistogram(const visfeat::VisibilityMap& map, int max_radius)
 int
 run(int argc, char** argv)
 {
-  const vt::Arguments args(argc, argv,
-                           {"-resolution", "-max_radius", "-min_radius",
-                            "-vertex_cells", "-dimensionality", "-opacity", "-threads",
-                            "-memory_limit_mb", "-voxels", "-graph", "-mesh_points",
-                            "-mesh_spacing", "-png", "-png_radius", "-png_size"},
-                           {"-no_repair", "-raw", "-no_regions", "-q", "-h", "--help"});
+  const vt::Arguments args(
+    argc, argv,
+    {"-resolution", "-max_radius", "-min_radius", "-vertex_cells", "-dimensionality",
+     "-opacity", "-smooth", "-threads", "-memory_limit_mb", "-voxels", "-graph",
+     "-mesh_points", "-mesh_spacing", "-png", "-png_radius", "-png_size"},
+    {"-no_repair", "-raw", "-no_regions", "-noise_mode", "-q", "-h", "--help"});
   if (!args.ok())
     return fail(args.error());
 
   Options opt;
   opt.quiet = args.has("-q");
+  opt.noise_mode = args.has("-noise_mode");
   if (opt.quiet)
     vt::beQuiet();
   else
@@ -334,6 +347,7 @@ run(int argc, char** argv)
       !args.getReal("-dimensionality", 0.0, 6.0, opt.dimensionality, error) ||
       !args.getReal("-opacity", 0.0, visfeat::VisibilityMap::kMaxOpacity, opt.opacity,
                     error) ||
+      !args.getReal("-smooth", 0.0, 8.0, opt.smooth, error) ||
       !args.getInteger("-threads", 0, visfeat::VisibilityMap::kMaxThreads, opt.threads,
                        error) ||
       !args.getInteger("-memory_limit_mb", 0, 1LL << 40, opt.memory_limit_mb, error) ||
@@ -439,6 +453,9 @@ run(int argc, char** argv)
   estimator.setRawMode(opt.raw);
   estimator.setCompleteRegions(opt.regions);
   estimator.setOpacity(opt.opacity);
+  estimator.setNoiseMode(opt.noise_mode);
+  if (opt.smooth >= 0.0)
+    estimator.setSmoothingRadius(opt.smooth);
   estimator.setNumberOfThreads(static_cast<unsigned int>(opt.threads));
   estimator.setBandRepair(opt.repair);
   estimator.setMemoryLimit(static_cast<std::uint64_t>(opt.memory_limit_mb) * 1024u *
@@ -455,6 +472,8 @@ run(int argc, char** argv)
   print_value("%d", opt.max_radius);
   print_info(", opacity ");
   print_value("%g", opt.opacity);
+  print_info(", smoothing ");
+  print_value("%g", estimator.getSmoothingRadius());
   print_info(", threads ");
   print_value("%d", opt.threads);
   print_info(", repair ");
@@ -510,6 +529,10 @@ run(int argc, char** argv)
   const visfeat::PhaseTimes& times = estimator.getPhaseTimes();
   print_info("Phases: grid ");
   print_value("%.1f", times.grid_ms);
+  if (times.smoothing_ms > 0.0) {
+    print_info(" ms, smoothing ");
+    print_value("%.1f", times.smoothing_ms);
+  }
   print_info(" ms, band ");
   print_value("%.1f", times.band_ms);
   print_info(" ms, free space ");
@@ -613,6 +636,8 @@ run(int argc, char** argv)
       {"raw", sp.raw ? "true" : "false"},
       {"complete_regions", sp.complete_regions ? "true" : "false"},
       {"opacity", std::to_string(opt.opacity)},
+      {"noise_mode", opt.noise_mode ? "true" : "false"},
+      {"smoothing_radius", std::to_string(estimator.getSmoothingRadius())},
       {"repair", opt.repair ? "true" : "false"},
       {"point_feature_distance", std::to_string(sp.point_feature_distance)},
       {"graph_dilation", std::to_string(graph.parameters().dilation_radius)},

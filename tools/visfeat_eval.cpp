@@ -102,6 +102,10 @@ printHelp(const char* program)
   print_info("    -opacity D         = visfeat's opacity (default: the estimator's, ");
   print_value("0");
   print_info(" cell edges)\n");
+  print_info("    -noise_mode        = visfeat's noise mode (smoothing 2 cells, "
+             "feature points within 1.5 cells; default: ");
+  print_value("off");
+  print_info(")\n");
   print_info("    -min_radius R      = visfeat's min_radius (default: the "
              "estimator's)\n");
   print_info("    -max_radius R      = visfeat's visibility cap (default: the "
@@ -148,6 +152,7 @@ struct Settings
   int resolution = 256;
   long long seed = 1;
   bool set_opacity = false, set_min_radius = false, set_max_radius = false;
+  bool noise_mode = false;
   double opacity = 0.0;
   int min_radius = 0, max_radius = 0;
   int threads = 0;
@@ -399,6 +404,7 @@ evaluate(const Settings& s, const std::string& name, double sigma)
     visfeat::VisibilityFeatureEstimation<pcl::PointXYZ, visfeat::PointVisibility> est;
     est.setInputCloud(cloud);
     est.setResolution(s.resolution);
+    est.setNoiseMode(s.noise_mode);
     if (s.set_opacity)
       est.setOpacity(s.opacity);
     if (s.set_max_radius)
@@ -470,7 +476,7 @@ run(int argc, char** argv)
                            {"-models", "-noise", "-resolution", "-seed", "-opacity",
                             "-min_radius", "-max_radius", "-threads", "-peers",
                             "-cgal_max_points", "-quantiles", "-json"},
-                           {"-h", "--help"});
+                           {"-noise_mode", "-h", "--help"});
   if (!args.ok())
     return fail(args.error());
   if (!args.positional().empty())
@@ -495,6 +501,7 @@ run(int argc, char** argv)
       !args.getInteger("-quantiles", 0, 1000000, s.quantiles, error))
     return fail(error);
   s.set_opacity = args.has("-opacity");
+  s.noise_mode = args.has("-noise_mode");
   s.set_min_radius = args.has("-min_radius");
   s.set_max_radius = args.has("-max_radius");
 
@@ -543,11 +550,12 @@ run(int argc, char** argv)
 #endif
   std::printf(
     "# visfeat_eval: resolution %d, spacing %g cells, seed %lld, threads %d%s "
-    "(%u hardware); opacity %s; recall within 1 cell, precision within 2 "
+    "(%u hardware); opacity %s%s; recall within 1 cell, precision within 2 "
     "cells of a true sharp curve; peers at their best threshold (%s)\n",
     s.resolution, kSpacingCells, s.seed, s.threads == 0 ? omp_threads : s.threads,
     s.threads == 0 ? " (all)" : "", std::thread::hardware_concurrency(),
     s.set_opacity ? std::to_string(s.opacity).c_str() : "default",
+    s.noise_mode ? ", noise mode" : "",
     s.quantiles == 0 ? "every distinct score tried"
                      : (std::to_string(s.quantiles) + " quantiles tried").c_str());
   std::printf("# PCL: NormalEstimationOMP k=%d, score lambda0/sum, time with kd-tree; "

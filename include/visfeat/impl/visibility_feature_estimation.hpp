@@ -58,6 +58,9 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::initCompute()
     const auto start = std::chrono::steady_clock::now();
     VisibilityMap::validate(visibility_);
     FeatureSegmentation::validate(segmentation_parameters_, visibility_.max_radius);
+    if (!(smoothing_.radius >= 0.0 && smoothing_.radius <= 8.0))
+      throw Error("smoothing radius " + std::to_string(smoothing_.radius) +
+                  " is out of range [0, 8] (cells; 0 = off)");
     grid_ = gridForCloud(*surface_, resolution_);
     // Refuse before allocating: the subcell mask dominates; cells are at most the
     // points.
@@ -69,7 +72,8 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::initCompute()
     const std::uint64_t octree_bytes = std::uint64_t{160} * cells + 4 * points;
     const std::uint64_t estimate =
       FreeSpace::estimateBytes(grid_) + VoxelBand::estimateBytes(grid_, cells, points) +
-      octree_bytes + std::uint64_t{4} * cells * static_cast<std::uint64_t>(threads);
+      octree_bytes + std::uint64_t{4} * cells * static_cast<std::uint64_t>(threads) +
+      (smoothing_.radius > 0.0 ? (sizeof(PointInT) + 40) * std::uint64_t{points} : 0);
     checkMemory(estimate, memory_limit_,
                 "a grid of " + std::to_string(grid_.dims.x()) + "x" +
                   std::to_string(grid_.dims.y()) + "x" +
@@ -212,7 +216,23 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::computeFeature(PointCloudOut& 
   using Clock = std::chrono::steady_clock;
   try {
     auto start = Clock::now();
-    band_ = buildVoxelBand(*surface_, grid_, band_options_);
+    // Noise mode: the band (and the per-point decision) use the smoothed surface.
+    typename PointCloudIn::ConstPtr surface = surface_;
+    if (smoothing_.radius > 0.0) {
+      std::vector<Eigen::Vector3f> points(surface_->size());
+      for (std::size_t i = 0; i < points.size(); ++i)
+        points[i] = (*surface_)[i].getVector3fMap();
+      SmoothingParameters smoothing = smoothing_;
+      smoothing.threads = visibility_.threads;
+      points = smoothPoints(points, grid_, smoothing);
+      auto smoothed = std::make_shared<pcl::PointCloud<PointInT>>(*surface_);
+      for (std::size_t i = 0; i < points.size(); ++i)
+        (*smoothed)[i].getVector3fMap() = points[i];
+      surface = smoothed;
+      times_.smoothing_ms = detail::millisecondsSince(start);
+      start = Clock::now();
+    }
+    band_ = buildVoxelBand(*surface, grid_, band_options_);
     times_.band_ms = detail::millisecondsSince(start);
 
     start = Clock::now();
@@ -249,6 +269,8 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::computeFeature(PointCloudOut& 
     for (std::size_t i = 0; i < indices_->size(); ++i) {
       const auto index = static_cast<std::size_t>((*indices_)[i]);
       const PointInT& p = (*input_)[index];
+      // The point as the band saw it (smoothed in noise mode).
+      const PointInT& seen = fake_surface_ ? (*surface)[index] : p;
       PointOutT& out = output[i];
       out.x = p.x;
       out.y = p.y;
@@ -262,7 +284,7 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::computeFeature(PointCloudOut& 
       FeatureClass cls =
         cell == kNoCell ? FeatureClass::kNone : segmentation_.cellClass(cell);
       if (cell != kNoCell)
-        refinePointLabel(p, cell, label, cls);
+        refinePointLabel(seen, cell, label, cls);
       out.label = label;
       out.feature_class = static_cast<std::uint8_t>(cls);
       dense = dense && cell != kNoCell;
