@@ -463,6 +463,11 @@ FeatureSegmentation::validate(const SegmentationParameters& p, int max_radius)
     msg << "vertex_reach " << p.vertex_reach << " is out of range [1, 1000] (cells)";
     throw Error(msg.str());
   }
+  if (p.join_distance < 0 || p.join_distance > 1000) {
+    std::ostringstream msg;
+    msg << "join_distance " << p.join_distance << " is out of range [0, 1000] (cells)";
+    throw Error(msg.str());
+  }
   if (p.feature_width < 0 || p.feature_width > 1000) {
     std::ostringstream msg;
     msg << "feature_width " << p.feature_width << " is out of range [0, 1000] (cells)";
@@ -556,11 +561,13 @@ FeatureSegmentation::compute(const VoxelBand& band,
     // Geodesic dilation of a small core through the band (the paper's vertex test):
     // the cores it reaches within vertex_reach cells.
     const std::uint32_t reach = static_cast<std::uint32_t>(parameters.vertex_reach);
+    const std::uint32_t join = static_cast<std::uint32_t>(parameters.join_distance);
     const std::vector<std::uint32_t>& core_of = result.cores_.cellLabels();
     BandDilation dilation(band);
-    auto dilate = [&](std::uint32_t l, const std::vector<CellId>& cells) {
+    auto dilate = [&](std::uint32_t l, const std::vector<CellId>& cells,
+                      std::uint32_t distance) {
       std::set<std::uint32_t> met;
-      dilation.run(cells, reach, [&](CellId c) {
+      dilation.run(cells, distance, [&](CellId c) {
         const std::uint32_t other = core_of[static_cast<std::size_t>(c)];
         if (other != 0 && other != l)
           met.insert(other);
@@ -578,7 +585,7 @@ FeatureSegmentation::compute(const VoxelBand& band,
     for (std::uint32_t l = 1; l <= cores.size(); ++l)
       if (cores[l - 1].feature_class != FeatureClass::kFace &&
           cores[l - 1].cells <= vertex_max && !core_cells[l].empty())
-        reached[l] = dilate(l, core_cells[l]);
+        reached[l] = dilate(l, core_cells[l], reach);
     // A short edge may break into small cores that all pass the vertex test (they
     // reach the edges of both its corners). A small core with pieces of its own edge
     // on opposite sides lies inside that edge, not at a corner: it is never a vertex.
@@ -677,7 +684,7 @@ FeatureSegmentation::compute(const VoxelBand& band,
     std::map<std::uint32_t, std::set<std::uint32_t>> edge_reach;
     for (const auto& [l, own] : signature)
       if (cls[l] == FeatureClass::kEdge && !core_cells[l].empty())
-        edge_reach[l] = dilate(l, core_cells[l]);
+        edge_reach[l] = dilate(l, core_cells[l], join);
     for (bool changed = true; changed;) {
       changed = false;
       contacts = contactsOf(band, labels, sets);
@@ -693,7 +700,8 @@ FeatureSegmentation::compute(const VoxelBand& band,
         }
       }
       // Pieces of one edge with something else between them (a speck merged into a
-      // face, a vertex): same pair of faces, within vertex_reach cells of each other.
+      // face, a vertex, a gap that noise opened): same pair of faces, within
+      // join_distance cells of each other.
       for (const auto& [a0, near] : edge_reach)
         for (const std::uint32_t b0 : near) {
           const std::uint32_t a = sets.find(a0), b = sets.find(b0);

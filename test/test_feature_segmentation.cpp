@@ -41,7 +41,8 @@ runPipeline(const std::string& name,
             std::uint64_t seed,
             int resolution = 256,
             double noise_cells = 0.0,
-            std::uint64_t rotation = 0)
+            std::uint64_t rotation = 0,
+            int join_distance = -1)
 {
   PipelineRun run;
   run.model = synthetic::rotated(
@@ -59,6 +60,11 @@ runPipeline(const std::string& name,
   est.setInputCloud(cloud);
   est.setResolution(resolution);
   est.setNoiseMode(noise_cells > 0.0);
+  if (join_distance >= 0) {
+    auto parameters = est.getSegmentationParameters();
+    parameters.join_distance = join_distance;
+    est.setSegmentationParameters(parameters);
+  }
   est.compute(run.output);
   EXPECT_EQ(est.getErrorMessage(), "");
   run.counts = est.getSegmentation().classCounts();
@@ -253,6 +259,15 @@ INSTANTIATE_TEST_SUITE_P(Models,
                                          NoisyCase{"cylinder", 0.32, false}),
                          noisyCaseName);
 
+// Joining: at sigma 0.32 noise breaks edges of the box with hole into pieces that the
+// default join_distance (24 cells) joins (NoiseMode checks 14 edges); without joining
+// (0: only touching pieces) some edges come out in pieces.
+TEST(Joining, NoiseSplitEdgesAreJoined)
+{
+  const PipelineRun run = runPipeline("box_with_hole", 1, 256, 0.32, 0, 0);
+  EXPECT_GT(run.counts[2], run.model.curves.size());
+}
+
 TEST(RawMode, KeepsThePapersLiteralComponents)
 {
   // Raw mode labels only cells at or above min_radius and leaves the rest 0.
@@ -307,6 +322,11 @@ TEST(SegmentationParameters, OutOfRangeIsRejectedByName)
   p = {};
   p.feature_width = -1;
   EXPECT_TRUE(rejects(p, "feature_width"));
+  p = {};
+  p.join_distance = -1;
+  EXPECT_TRUE(rejects(p, "join_distance"));
+  p.join_distance = 1001;
+  EXPECT_TRUE(rejects(p, "join_distance"));
   p = {};
   p.point_feature_distance = -0.5;
   EXPECT_TRUE(rejects(p, "point_feature_distance"));

@@ -631,6 +631,7 @@ run(int argc, char** argv)
       {"dimensionality", std::to_string(sp.components.dimensionality)},
       {"face_min_depth", std::to_string(sp.components.face_min_depth)},
       {"vertex_reach", std::to_string(sp.vertex_reach)},
+      {"join_distance", std::to_string(sp.join_distance)},
       {"feature_width", std::to_string(sp.feature_width)},
       {"min_piece_cells", std::to_string(sp.min_piece_cells)},
       {"raw", sp.raw ? "true" : "false"},

@@ -32,6 +32,12 @@ struct SegmentationParameters
    * Edge components stop about min_radius cells short of a corner, so keep it above
    * min_radius; it must stay below the shortest edge length. Default 24. */
   int vertex_reach = 24;
+  /** \brief Joining: pieces of one edge (cores that separate the same two faces),
+   * split by noise, by a speck or by a vertex region between them, are one edge when
+   * their geodesic distance through the band is at most this many cells (pieces that
+   * touch are always joined). Keep it below the distance between two parallel edges
+   * of the same two faces. Default 24. */
+  int join_distance = 24;
   /** \brief Complete regions: edge and vertex regions keep the cells within this many
    * 6-steps of their skeleton (their core cells and the ridge paths that join each
    * edge to its vertices); the rest of their watershed basin goes to the nearest face.
