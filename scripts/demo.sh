@@ -60,8 +60,9 @@ Outputs:
 View them with:
   pcl_viewer $out/${model}_labeled.pcd
     pcl_viewer colours by the 'label' field (one colour per region) by default;
-    keys: l lists the colour handlers (one per field), 0-9 switches between them
-    (e.g. feature_class, visibility_radius), +/- changes the point size,
-    r resets the camera, j saves a PNG snapshot, h prints help, q quits.
+    keys: 1 random colours, then one key per field in file order: 2-4 x y z,
+    5 curve_distance, 6 face_id, 7 visibility_radius, 8 label, 9 feature_class
+    (l lists them); +/- changes the point size, r resets the camera,
+    j saves a PNG snapshot, h prints help, q quits.
   pcl_viewer $out/${model}_cells.pcd
 MSG
