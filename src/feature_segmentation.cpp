@@ -110,7 +110,7 @@ thinFeatureRegions(const VoxelBand& band,
                    const VisibilityMap& map,
                    const std::vector<std::uint32_t>& core_labels,
                    const std::vector<char>& speck,
-                   const std::vector<FeatureClass>& cls,
+                   std::vector<FeatureClass>& cls,
                    int width,
                    int reach,
                    std::vector<std::uint32_t>& labels,
@@ -136,18 +136,8 @@ thinFeatureRegions(const VoxelBand& band,
         .push_back(static_cast<CellId>(c));
   }
 
-  // Vertex-edge pairs that touch.
-  std::set<std::pair<std::uint32_t, std::uint32_t>> pairs;
-  for (std::size_t c = 0; c < n; ++c) {
-    if (labels[c] == 0 || cls[labels[c]] != FeatureClass::kVertex)
-      continue;
-    for (const CellId nb : band.neighbours(static_cast<CellId>(c)))
-      if (nb != kNoCell && labels[static_cast<std::size_t>(nb)] != 0 &&
-          cls[labels[static_cast<std::size_t>(nb)]] == FeatureClass::kEdge)
-        pairs.emplace(labels[c], labels[static_cast<std::size_t>(nb)]);
-  }
-  // Each end of an edge (the farthest pair of its core cells) and the vertex nearest to
-  // it, within reach.
+  // Vertex-edge pairs: regions that touch, and each end of an edge (the farthest pair
+  // of its core cells) with the vertex nearest to it, within reach.
   auto distance = [&](CellId a, CellId b) {
     return (band.coord(a) - band.coord(b)).cast<double>().norm();
   };
@@ -161,22 +151,83 @@ thinFeatureRegions(const VoxelBand& band,
       }
     return best;
   };
-  for (const auto& [edge, cells] : edge_cores) {
-    const CellId one_end = farthestFrom(cells.front(), cells);
-    const CellId other_end = farthestFrom(one_end, cells);
-    for (const CellId end : {one_end, other_end}) {
-      std::uint32_t nearest = 0;
-      double nearest_distance = static_cast<double>(reach);
-      for (const auto& [vertex, vertex_cells] : vertex_cores)
-        for (const CellId c : vertex_cells)
-          if (const double d = distance(end, c); d <= nearest_distance) {
-            nearest_distance = d;
-            nearest = vertex;
-          }
-      if (nearest != 0)
-        pairs.emplace(nearest, edge);
+  struct EdgeEnds
+  {
+    std::array<CellId, 2> cell{{kNoCell, kNoCell}};
+    std::array<std::uint32_t, 2> vertex{{0, 0}};
+  };
+  std::set<std::pair<std::uint32_t, std::uint32_t>> pairs;
+  std::map<std::uint32_t, EdgeEnds> ends;
+  auto findPairs = [&]() {
+    pairs.clear();
+    ends.clear();
+    for (std::size_t c = 0; c < n; ++c) {
+      if (labels[c] == 0 || cls[labels[c]] != FeatureClass::kVertex)
+        continue;
+      for (const CellId nb : band.neighbours(static_cast<CellId>(c)))
+        if (nb != kNoCell && labels[static_cast<std::size_t>(nb)] != 0 &&
+            cls[labels[static_cast<std::size_t>(nb)]] == FeatureClass::kEdge)
+          pairs.emplace(labels[c], labels[static_cast<std::size_t>(nb)]);
     }
+    for (const auto& [edge, cells] : edge_cores) {
+      EdgeEnds& e = ends[edge];
+      e.cell[0] = farthestFrom(cells.front(), cells);
+      e.cell[1] = farthestFrom(e.cell[0], cells);
+      for (int k = 0; k < 2; ++k) {
+        double nearest_distance = static_cast<double>(reach);
+        for (const auto& [vertex, vertex_cells] : vertex_cores)
+          for (const CellId c : vertex_cells)
+            if (const double d = distance(e.cell[k], c); d <= nearest_distance) {
+              nearest_distance = d;
+              e.vertex[k] = vertex;
+            }
+        if (e.vertex[k] != 0)
+          pairs.emplace(e.vertex[k], edge);
+      }
+    }
+  };
+  findPairs();
+  // Two corners merged into one vertex (noise can join the candidates at both ends of a
+  // short edge): a straight run whose two far-apart ends both link to the same vertex.
+  // The vertex is split across the middle of that edge; the half on the far side takes
+  // the id of one of its own cores.
+  bool split = false;
+  for (const auto& [edge, e] : ends) {
+    const std::uint32_t vertex = e.vertex[0];
+    if (vertex == 0 || e.vertex[1] != vertex || distance(e.cell[0], e.cell[1]) <= reach)
+      continue;
+    const Eigen::Vector3d a = band.coord(e.cell[0]).cast<double>();
+    const Eigen::Vector3d b = band.coord(e.cell[1]).cast<double>();
+    auto farSide = [&](std::size_t c) {
+      const Eigen::Vector3d x = band.coord(static_cast<CellId>(c)).cast<double>();
+      return (x - b).squaredNorm() < (x - a).squaredNorm();
+    };
+    std::uint32_t other = 0;
+    for (const CellId c : vertex_cores[vertex]) {
+      const std::uint32_t core = core_labels[static_cast<std::size_t>(c)];
+      if (farSide(static_cast<std::size_t>(c)) && core != vertex &&
+          (other == 0 || core < other))
+        other = core;
+    }
+    bool near_side = false;
+    for (const CellId c : vertex_cores[vertex])
+      near_side = near_side || !farSide(static_cast<std::size_t>(c));
+    if (other == 0 || !near_side)
+      continue;
+    for (std::size_t c = 0; c < n; ++c)
+      if (labels[c] == vertex && farSide(c))
+        labels[c] = other;
+    cls[other] = FeatureClass::kVertex;
+    std::vector<CellId>& cells = vertex_cores[vertex];
+    std::vector<CellId> stay;
+    for (const CellId c : cells)
+      (farSide(static_cast<std::size_t>(c)) ? vertex_cores[other] : stay).push_back(c);
+    cells = stay;
+    split = true;
   }
+  if (split)
+    findPairs();
+
   // Straight edges and corners. Near a corner the radius drops below min_radius, so an
   // edge's core stops short of it and the vertex's cores are specks at the ends of its
   // edges rather than at the tip. Where a vertex has two or more straight edges, its
