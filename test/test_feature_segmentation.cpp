@@ -94,8 +94,9 @@ caseName(const testing::TestParamInfo<Case>& info)
 
 // At least 95% of the points labeled edge or vertex lie within 2 cells of a true sharp
 // curve; at least 90% of the points within 1 cell of one are labeled edge or vertex.
-void
-expectFeaturePointsHugTheTrueCurves(const PipelineRun& run)
+// Per point: edge/vertex labels against the distance to the true sharp curves.
+evaluation::PointScores
+featureScores(const PipelineRun& run)
 {
   std::vector<std::uint8_t> feature(run.output.size());
   std::vector<double> distance(run.output.size());
@@ -104,8 +105,27 @@ expectFeaturePointsHugTheTrueCurves(const PipelineRun& run)
     feature[i] = cls == FeatureClass::kEdge || cls == FeatureClass::kVertex;
     distance[i] = run.samples.curve_distance[i] / run.cell;
   }
-  const evaluation::PointScores scores =
-    evaluation::scoreFeaturePoints(feature, distance);
+  return evaluation::scoreFeaturePoints(feature, distance);
+}
+
+// The run's regions and graph matched against the model's truth (evaluation.h).
+evaluation::TopologyComparison
+compareWithTruth(const PipelineRun& run)
+{
+  std::vector<std::uint32_t> labels(run.output.size());
+  std::vector<std::uint8_t> classes(run.output.size());
+  for (std::size_t i = 0; i < run.output.size(); ++i) {
+    labels[i] = run.output[i].label;
+    classes[i] = run.output[i].feature_class;
+  }
+  return evaluation::compareTopology(run.model, run.samples.points, run.samples.face,
+                                     labels, classes, run.graph, run.cell);
+}
+
+void
+expectFeaturePointsHugTheTrueCurves(const PipelineRun& run)
+{
+  const evaluation::PointScores scores = featureScores(run);
   ASSERT_GT(scores.labeled, 0u);
   ASSERT_GT(scores.near, 0u);
   EXPECT_GE(scores.precision(), 0.95) << "precision (2 cells)";
@@ -140,15 +160,7 @@ TEST_P(ExactTopology, CountsMatchTheTruth)
   // Regions matched to the true curves, vertices and faces (evaluation.h says how);
   // every curve's region links exactly the regions of its two faces and of its end
   // vertices (none for a circle).
-  std::vector<std::uint32_t> labels(run.output.size());
-  std::vector<std::uint8_t> classes(run.output.size());
-  for (std::size_t i = 0; i < run.output.size(); ++i) {
-    labels[i] = run.output[i].label;
-    classes[i] = run.output[i].feature_class;
-  }
-  const evaluation::TopologyComparison comparison =
-    evaluation::compareTopology(run.model, run.samples.points, run.samples.face, labels,
-                                classes, run.graph, run.cell);
+  const evaluation::TopologyComparison comparison = compareWithTruth(run);
   EXPECT_TRUE(comparison.countsExact()) << joinLines(comparison.problems);
   EXPECT_EQ(comparison.curves_matched, run.model.curves.size());
   EXPECT_EQ(comparison.vertices_matched, run.model.vertices.size());
@@ -215,23 +227,9 @@ TEST_P(NoiseMode, RecoversTheTopology)
 {
   const NoisyCase& c = GetParam();
   const PipelineRun run = runPipeline(c.model, 1, 256, c.sigma);
-  std::vector<std::uint32_t> labels(run.output.size());
-  std::vector<std::uint8_t> classes(run.output.size());
-  std::vector<std::uint8_t> feature(run.output.size());
-  std::vector<double> distance(run.output.size());
-  for (std::size_t i = 0; i < run.output.size(); ++i) {
-    labels[i] = run.output[i].label;
-    classes[i] = run.output[i].feature_class;
-    const auto cls = static_cast<FeatureClass>(classes[i]);
-    feature[i] = cls == FeatureClass::kEdge || cls == FeatureClass::kVertex;
-    distance[i] = run.samples.curve_distance[i] / run.cell;
-  }
-  const evaluation::TopologyComparison comparison =
-    evaluation::compareTopology(run.model, run.samples.points, run.samples.face, labels,
-                                classes, run.graph, run.cell);
+  const evaluation::TopologyComparison comparison = compareWithTruth(run);
   EXPECT_TRUE(comparison.exact()) << joinLines(comparison.problems);
-  const evaluation::PointScores scores =
-    evaluation::scoreFeaturePoints(feature, distance);
+  const evaluation::PointScores scores = featureScores(run);
   if (c.f1) {
     EXPECT_GE(scores.f1(), 0.95)
       << "precision " << scores.precision() << ", recall " << scores.recall();
@@ -269,15 +267,7 @@ class HeavyNoise : public testing::TestWithParam<const char*>
 TEST_P(HeavyNoise, FindsNineTenthsOfTheFeatures)
 {
   const PipelineRun run = runPipeline(GetParam(), 1, 256, 0.45);
-  std::vector<std::uint32_t> labels(run.output.size());
-  std::vector<std::uint8_t> classes(run.output.size());
-  for (std::size_t i = 0; i < run.output.size(); ++i) {
-    labels[i] = run.output[i].label;
-    classes[i] = run.output[i].feature_class;
-  }
-  const evaluation::TopologyComparison comparison =
-    evaluation::compareTopology(run.model, run.samples.points, run.samples.face, labels,
-                                classes, run.graph, run.cell);
+  const evaluation::TopologyComparison comparison = compareWithTruth(run);
   EXPECT_GE(static_cast<double>(comparison.vertices_matched),
             0.9 * static_cast<double>(run.model.vertices.size()))
     << joinLines(comparison.problems);
