@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
+#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -213,6 +214,15 @@ beQuiet()
 }
 
 /** \brief Print one error line (PCL style, red on a terminal) to stderr. */
+/** \brief Monotonic seconds, for timing phases of a tool run. */
+inline double
+secondsNow()
+{
+  return std::chrono::duration<double>(
+           std::chrono::steady_clock::now().time_since_epoch())
+    .count();
+}
+
 inline void
 printError(const std::string& program, const std::string& message)
 {

@@ -104,14 +104,6 @@ fail(const std::string& message)
   return 1;
 }
 
-double
-now()
-{
-  return std::chrono::duration<double>(
-           std::chrono::steady_clock::now().time_since_epoch())
-    .count();
-}
-
 /** \brief Peak resident memory. Linux lets a process reset its high-water mark
  * (/proc/self/clear_refs, "5"); when that works each run reports its own peak (VmHWM),
  * otherwise getrusage's ru_maxrss, the peak of the whole process so far. */
@@ -297,12 +289,12 @@ runVisfeat(const Settings& s,
     estimator.setNumberOfThreads(static_cast<unsigned int>(s.threads));
     pcl::PointCloud<visfeat::PointVisibility> out;
     memory.startRun();
-    const double t0 = now();
+    const double t0 = vt::secondsNow();
     vt::quietly([&] {
       estimator.compute(out);
       return 0;
     });
-    const double seconds = now() - t0;
+    const double seconds = vt::secondsNow() - t0;
     peak = std::max(peak, memory.peakMiB());
     if (out.empty()) {
       best.error = estimator.getErrorMessage().empty() ? "compute() failed"
@@ -352,9 +344,10 @@ runNormals(const Settings& s,
     ne.setKSearch(kBaselineK);
     pcl::PointCloud<pcl::Normal> normals;
     memory.startRun();
-    const double t0 = now(); // includes the kd-tree build, done inside compute()
+    const double t0 =
+      vt::secondsNow(); // includes the kd-tree build, done inside compute()
     ne.compute(normals);
-    const double seconds = now() - t0;
+    const double seconds = vt::secondsNow() - t0;
     peak = std::max(peak, memory.peakMiB());
     if (normals.size() != cloud->size()) {
       best.error = "NormalEstimationOMP failed";

@@ -137,14 +137,6 @@ fail(const std::string& message)
   return 1;
 }
 
-double
-now()
-{
-  return std::chrono::duration<double>(
-           std::chrono::steady_clock::now().time_since_epoch())
-    .count();
-}
-
 struct Settings
 {
   std::vector<std::string> models;
@@ -413,12 +405,12 @@ evaluate(const Settings& s, const std::string& name, double sigma)
       est.setMinRadius(s.min_radius);
     est.setNumberOfThreads(static_cast<unsigned int>(s.threads));
     pcl::PointCloud<visfeat::PointVisibility> out;
-    const double t0 = now();
+    const double t0 = vt::secondsNow();
     vt::quietly([&] {
       est.compute(out);
       return 0;
     });
-    row.seconds = now() - t0;
+    row.seconds = vt::secondsNow() - t0;
     if (out.empty()) {
       row.error =
         est.getErrorMessage().empty() ? "compute() failed" : est.getErrorMessage();
