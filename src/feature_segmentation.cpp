@@ -26,11 +26,73 @@ constexpr int kSkeletonCentreRadius = 3;
  * (cores are up to about 4 cells wide). */
 constexpr double kStraightTolerance = 3.0;
 constexpr std::size_t kMinLineCells = 4;
+/** Pieces of one straight edge join across any gap when they are parallel within
+ * about 15 degrees, on one line, and each at least this long (cells). */
+constexpr double kMinJoinLength = 8.0;
+constexpr double kJoinCosine = 0.966;
+/** A vertex ahead of a straight edge's end lies within this slope of its line. */
+constexpr double kAheadSlope = 0.2;
+/** A skeleton is locally a line where its spread along the main axis is this many
+ * times the next. */
+constexpr double kElongation = 4.0;
 /** Smallest eigenvalue of sum(I - u u^T) over a corner's edge directions u: 0 when they
  * are parallel, 1 - cos(angle) for two edges at an angle (0.13 at 30 degrees). */
 constexpr double kMinCornerConditioning = 0.1;
 /** Cells of a drawn edge within this distance of the corner join the vertex. */
 constexpr double kCornerCells = 1.5;
+
+/** A core's least-squares line, in cell units. */
+struct CoreLine
+{
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();
+  Eigen::Vector3d direction = Eigen::Vector3d::UnitX();
+  double length = 0.0; // extent along the direction
+  double width = 0.0;  // largest distance of a cell from the line
+  bool straight() const
+  {
+    return width <= kStraightTolerance && length >= kMinJoinLength;
+  }
+  /** `other` (shorter) continues this straight line: it is straight, parallel, and its
+   * middle lies on this line. */
+  bool onLine(const CoreLine& other) const
+  {
+    if (!straight() || !other.straight())
+      return false;
+    const Eigen::Vector3d d = other.point - point;
+    return std::abs(other.direction.dot(direction)) >= kJoinCosine &&
+           (d - d.dot(direction) * direction).norm() <= kStraightTolerance;
+  }
+};
+
+CoreLine
+fitCoreLine(const VoxelBand& band, const std::vector<CellId>& cells)
+{
+  CoreLine line;
+  if (cells.empty())
+    return line;
+  for (const CellId c : cells)
+    line.point += band.coord(c).cast<double>();
+  line.point /= static_cast<double>(cells.size());
+  Eigen::Matrix3d scatter = Eigen::Matrix3d::Zero();
+  for (const CellId c : cells) {
+    const Eigen::Vector3d d = band.coord(c).cast<double>() - line.point;
+    scatter += d * d.transpose();
+  }
+  line.direction = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(scatter)
+                     .eigenvectors()
+                     .col(2)
+                     .normalized();
+  double low = 0.0, high = 0.0;
+  for (const CellId c : cells) {
+    const Eigen::Vector3d d = band.coord(c).cast<double>() - line.point;
+    const double along = d.dot(line.direction);
+    low = std::min(low, along);
+    high = std::max(high, along);
+    line.width = std::max(line.width, (d - along * line.direction).norm());
+  }
+  line.length = high - low;
+  return line;
+}
 
 /** Union-find over labels 1..n (0 unused). */
 class LabelUnion
@@ -113,14 +175,20 @@ thinFeatureRegions(const VoxelBand& band,
                    std::vector<FeatureClass>& cls,
                    int width,
                    int reach,
+                   int bridge,
                    std::vector<std::uint32_t>& labels,
-                   std::vector<Eigen::Vector3f>& centres)
+                   std::vector<Eigen::Vector3f>& centres,
+                   std::vector<Eigen::Vector3f>& tangents)
 {
   const float nan = std::numeric_limits<float>::quiet_NaN();
   centres.assign(band.size(), Eigen::Vector3f::Constant(nan));
-  auto setCentre = [&](CellId c, const Eigen::Vector3d& x) { // x in cell index units
+  tangents.assign(band.size(), Eigen::Vector3f::Zero());
+  // x in cell index units; direction: the line's, unit.
+  auto setCentre = [&](CellId c, const Eigen::Vector3d& x,
+                       const Eigen::Vector3d& direction) {
     centres[static_cast<std::size_t>(c)] =
       (x + Eigen::Vector3d::Constant(0.5)).cast<float>();
+    tangents[static_cast<std::size_t>(c)] = direction.cast<float>();
   };
   const std::size_t n = band.size();
   auto isFeature = [&](std::uint32_t label) {
@@ -156,6 +224,32 @@ thinFeatureRegions(const VoxelBand& band,
     std::array<CellId, 2> cell{{kNoCell, kNoCell}};
     std::array<std::uint32_t, 2> vertex{{0, 0}};
   };
+  // A straight edge whose core stops more than `reach` short of its corner (a shallow
+  // crease under noise): the vertex nearest ahead of that end on its line, within
+  // twice the reach.
+  auto vertexAhead = [&](const std::vector<CellId>& cells,
+                         CellId end) -> std::uint32_t {
+    const CoreLine line = fitCoreLine(band, cells);
+    if (!line.straight())
+      return 0;
+    const Eigen::Vector3d from = band.coord(end).cast<double>();
+    const Eigen::Vector3d out =
+      (from - line.point).dot(line.direction) >= 0.0 ? line.direction : -line.direction;
+    std::uint32_t best = 0;
+    double best_along = 2.0 * static_cast<double>(reach);
+    for (const auto& [vertex, vertex_cells] : vertex_cores)
+      for (const CellId c : vertex_cells) {
+        const Eigen::Vector3d d = band.coord(c).cast<double>() - from;
+        const double along = d.dot(out);
+        if (along > 0.0 && along <= best_along &&
+            (d - along * out).norm() <=
+              std::max(kStraightTolerance, kAheadSlope * along)) {
+          best_along = along;
+          best = vertex;
+        }
+      }
+    return best;
+  };
   std::set<std::pair<std::uint32_t, std::uint32_t>> pairs;
   std::map<std::uint32_t, EdgeEnds> ends;
   auto findPairs = [&]() {
@@ -181,6 +275,8 @@ thinFeatureRegions(const VoxelBand& band,
               nearest_distance = d;
               e.vertex[k] = vertex;
             }
+        if (e.vertex[k] == 0)
+          e.vertex[k] = vertexAhead(cells, e.cell[k]);
         if (e.vertex[k] != 0)
           pairs.emplace(e.vertex[k], edge);
       }
@@ -188,13 +284,15 @@ thinFeatureRegions(const VoxelBand& band,
   };
   findPairs();
   // Two corners merged into one vertex (noise can join the candidates at both ends of a
-  // short edge): a straight run whose two far-apart ends both link to the same vertex.
+  // short edge): a straight run whose two ends, more than half the reach apart, both
+  // link to the same vertex.
   // The vertex is split across the middle of that edge; the half on the far side takes
   // the id of one of its own cores.
   bool split = false;
   for (const auto& [edge, e] : ends) {
     const std::uint32_t vertex = e.vertex[0];
-    if (vertex == 0 || e.vertex[1] != vertex || distance(e.cell[0], e.cell[1]) <= reach)
+    if (vertex == 0 || e.vertex[1] != vertex ||
+        distance(e.cell[0], e.cell[1]) <= 0.5 * reach)
       continue;
     const Eigen::Vector3d a = band.coord(e.cell[0]).cast<double>();
     const Eigen::Vector3d b = band.coord(e.cell[1]).cast<double>();
@@ -269,7 +367,8 @@ thinFeatureRegions(const VoxelBand& band,
     if (line.straight)
       for (const CellId c : edge_cores[edge]) {
         const Eigen::Vector3d d = band.coord(c).cast<double>() - line.point;
-        setCentre(c, line.point + d.dot(line.direction) * line.direction);
+        setCentre(c, line.point + d.dot(line.direction) * line.direction,
+                  line.direction);
       }
   std::map<std::uint32_t, std::vector<std::uint32_t>> straight_edges_of;
   for (const auto& [vertex, edge] : pairs)
@@ -356,7 +455,7 @@ thinFeatureRegions(const VoxelBand& band,
             (x - at).norm() < (centres[static_cast<std::size_t>(c)].cast<double>() -
                                Eigen::Vector3d::Constant(0.5) - at)
                                 .norm())
-          setCentre(c, x);
+          setCentre(c, x, (end - corner) / std::max(length, 1e-9));
       }
       drawn.emplace(vertex, e);
     }
@@ -421,6 +520,78 @@ thinFeatureRegions(const VoxelBand& band,
     }
   }
 
+  // Gaps in an edge's skeleton (noise thins the ridge, most on curved and shallow
+  // edges): each end of a piece is bridged by a straight segment to the nearest cell
+  // of another piece of the same edge within `bridge` cells.
+  {
+    std::map<std::uint32_t, std::vector<CellId>> edge_skeleton;
+    for (std::size_t c = 0; c < n; ++c)
+      if (skeleton[c] && cls[labels[c]] == FeatureClass::kEdge)
+        edge_skeleton[labels[c]].push_back(static_cast<CellId>(c));
+    std::vector<std::uint32_t> piece_of(n, 0);
+    for (const auto& [edge, cells] : edge_skeleton) {
+      std::vector<std::vector<CellId>> pieces;
+      for (const CellId seed : cells) {
+        if (piece_of[static_cast<std::size_t>(seed)] != 0)
+          continue;
+        pieces.emplace_back(1, seed);
+        const auto id = static_cast<std::uint32_t>(pieces.size());
+        piece_of[static_cast<std::size_t>(seed)] = id;
+        for (std::size_t head = 0; head < pieces.back().size(); ++head) {
+          const CellCoord at = band.coord(pieces.back()[head]);
+          for (int dz = -1; dz <= 1; ++dz)
+            for (int dy = -1; dy <= 1; ++dy)
+              for (int dx = -1; dx <= 1; ++dx) {
+                const CellId m = band.find(at + CellCoord(dx, dy, dz));
+                if (m != kNoCell && skeleton[static_cast<std::size_t>(m)] &&
+                    labels[static_cast<std::size_t>(m)] == edge &&
+                    piece_of[static_cast<std::size_t>(m)] == 0) {
+                  piece_of[static_cast<std::size_t>(m)] = id;
+                  pieces.back().push_back(m);
+                }
+              }
+        }
+      }
+      std::vector<std::pair<CellId, CellId>> bridges;
+      for (const auto& piece : pieces) {
+        const CellId first = farthestFrom(piece.front(), piece);
+        for (const CellId end : {first, farthestFrom(first, piece)}) {
+          CellId best = kNoCell;
+          double best_distance = static_cast<double>(bridge);
+          for (const CellId c : cells)
+            if (piece_of[static_cast<std::size_t>(c)] !=
+                  piece_of[static_cast<std::size_t>(end)] &&
+                distance(end, c) <= best_distance) {
+              best_distance = distance(end, c);
+              best = c;
+            }
+          if (best != kNoCell)
+            bridges.emplace_back(end, best);
+        }
+      }
+      for (const CellId c : cells)
+        piece_of[static_cast<std::size_t>(c)] = 0;
+      for (const auto& [from_cell, to_cell] : bridges) {
+        const Eigen::Vector3d a = band.coord(from_cell).cast<double>();
+        const Eigen::Vector3d b = band.coord(to_cell).cast<double>();
+        const double length = (b - a).norm();
+        const int samples = std::max(1, static_cast<int>(std::ceil(length * 4.0)));
+        for (int k = 1; k < samples; ++k) {
+          const Eigen::Vector3d x = a + (b - a) * (double(k) / samples);
+          const CellId c = nearestCell(x);
+          if (c == kNoCell || skeleton[static_cast<std::size_t>(c)])
+            continue;
+          const std::uint32_t l = labels[static_cast<std::size_t>(c)];
+          if (l != edge && isFeature(l))
+            continue; // another feature's cell stays its own
+          skeleton[static_cast<std::size_t>(c)] = 1;
+          labels[static_cast<std::size_t>(c)] = edge;
+          setCentre(c, x, (b - a) / length);
+        }
+      }
+    }
+  }
+
   // Keep feature cells within `width` steps of their region's skeleton.
   std::vector<int> steps(n, -1);
   std::vector<CellId> queue;
@@ -471,15 +642,16 @@ middleOfSkeleton(const VoxelBand& band,
                  const std::vector<std::uint32_t>& labels,
                  const std::vector<char>& skeleton,
                  int radius,
-                 std::vector<Eigen::Vector3f>& centres)
+                 std::vector<Eigen::Vector3f>& centres,
+                 std::vector<Eigen::Vector3f>& tangents)
 {
   const int r2 = radius * radius;
+  std::vector<Eigen::Vector3d> around;
   for (std::size_t c = 0; c < band.size(); ++c) {
     if (!skeleton[c] || !std::isnan(centres[c].x()))
       continue;
     const CellCoord at = band.coord(static_cast<CellId>(c));
-    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-    int count = 0;
+    around.clear();
     for (int dz = -radius; dz <= radius; ++dz)
       for (int dy = -radius; dy <= radius; ++dy)
         for (int dx = -radius; dx <= radius; ++dx) {
@@ -488,12 +660,22 @@ middleOfSkeleton(const VoxelBand& band,
           const CellCoord q = at + CellCoord(dx, dy, dz);
           const CellId m = band.find(q);
           if (m != kNoCell && skeleton[static_cast<std::size_t>(m)] &&
-              labels[static_cast<std::size_t>(m)] == labels[c]) {
-            sum += q.cast<double>();
-            ++count;
-          }
+              labels[static_cast<std::size_t>(m)] == labels[c])
+            around.push_back(q.cast<double>());
         }
-    centres[c] = (sum / count).cast<float>() + Eigen::Vector3f::Constant(0.5f);
+    Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+    for (const auto& q : around)
+      mean += q;
+    mean /= static_cast<double>(around.size());
+    centres[c] = mean.cast<float>() + Eigen::Vector3f::Constant(0.5f);
+    // The local direction where the skeleton is elongated (an edge; not a blob).
+    Eigen::Matrix3d scatter = Eigen::Matrix3d::Zero();
+    for (const auto& q : around)
+      scatter += (q - mean) * (q - mean).transpose();
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(scatter);
+    if (around.size() >= 3 &&
+        solver.eigenvalues()(2) > kElongation * solver.eigenvalues()(1))
+      tangents[c] = solver.eigenvectors().col(2).normalized().cast<float>();
   }
 }
 
@@ -732,10 +914,29 @@ FeatureSegmentation::compute(const VoxelBand& band,
     // root's class.
 
     // 4. Fragments: touching edges with the same pair of faces, touching vertices.
+    // A path of 6-steps is up to sqrt(3) times longer than the straight gap it spans,
+    // so an edge at an angle to the grid would join shorter gaps than one along it:
+    // the band is searched sqrt(3) * join_distance steps wide, and pieces join when
+    // their closest core cells are also within join_distance cells of each other.
     std::map<std::uint32_t, std::set<std::uint32_t>> edge_reach;
+    const auto join_steps =
+      static_cast<std::uint32_t>(std::ceil(std::sqrt(3.0) * static_cast<double>(join)));
+    auto gapWithin = [&](std::uint32_t a, std::uint32_t b) {
+      const auto limit = static_cast<int>(join) * static_cast<int>(join);
+      for (const CellId x : core_cells[a])
+        for (const CellId y : core_cells[b])
+          if ((band.coord(x) - band.coord(y)).squaredNorm() <= limit)
+            return true;
+      return false;
+    };
     for (const auto& [l, own] : signature)
-      if (cls[l] == FeatureClass::kEdge && !core_cells[l].empty())
-        edge_reach[l] = dilate(l, core_cells[l], join);
+      if (cls[l] == FeatureClass::kEdge && !core_cells[l].empty()) {
+        std::set<std::uint32_t> near;
+        for (const std::uint32_t m : dilate(l, core_cells[l], join_steps))
+          if (signature.count(m) && signature[m] == own && gapWithin(l, m))
+            near.insert(m);
+        edge_reach[l] = std::move(near);
+      }
     for (bool changed = true; changed;) {
       changed = false;
       contacts = contactsOf(band, labels, sets);
@@ -781,6 +982,33 @@ FeatureSegmentation::compute(const VoxelBand& band,
               changed = true;
             }
           }
+      // Pieces of one straight edge with a longer gap than join_distance (a shallow
+      // crease under noise loses its ridge for tens of cells): same pair of faces, and
+      // the smaller piece on the line of the larger. Two edges of the same two faces
+      // are never on one line. join_distance 0 turns joining off, this too.
+      if (!changed && join > 0) {
+        std::map<std::uint32_t, std::vector<CellId>> cells_of;
+        for (const auto& [l, own] : signature)
+          if (cls[sets.find(l)] == FeatureClass::kEdge)
+            cells_of[sets.find(l)].insert(cells_of[sets.find(l)].end(),
+                                          core_cells[l].begin(), core_cells[l].end());
+        std::map<std::uint32_t, CoreLine> line_of;
+        for (const auto& [root, cells] : cells_of)
+          line_of[root] = fitCoreLine(band, cells);
+        for (auto a = line_of.begin(); a != line_of.end() && !changed; ++a)
+          for (auto b = std::next(a); b != line_of.end() && !changed; ++b) {
+            if (!signature.count(a->first) || !signature.count(b->first) ||
+                signature[a->first] != signature[b->first])
+              continue;
+            const bool a_longer = a->second.length >= b->second.length;
+            const CoreLine& longer = a_longer ? a->second : b->second;
+            const CoreLine& shorter = a_longer ? b->second : a->second;
+            if (longer.onLine(shorter)) {
+              sets.join(a->first, b->first);
+              changed = true;
+            }
+          }
+      }
     }
     // 5. Two corners share at most one edge: vertex candidates whose reached edges
     // share two or more mark the same corner.
@@ -812,10 +1040,11 @@ FeatureSegmentation::compute(const VoxelBand& band,
     if (parameters.complete_regions)
       result.skeleton_ = thinFeatureRegions(
         band, map, result.cores_.cellLabels(), speck, cls, parameters.feature_width,
-        parameters.vertex_reach, labels, result.skeleton_centres_);
+        parameters.vertex_reach, parameters.join_distance, labels,
+        result.skeleton_centres_, result.skeleton_tangents_);
     if (parameters.complete_regions)
       middleOfSkeleton(band, labels, result.skeleton_, kSkeletonCentreRadius,
-                       result.skeleton_centres_);
+                       result.skeleton_centres_, result.skeleton_tangents_);
   }
 
   // Renumber 1.. by smallest cell id.

@@ -19,6 +19,7 @@
 #include <limits>
 #include <map>
 #include <string>
+#include <vector>
 
 namespace {
 
@@ -207,17 +208,16 @@ INSTANTIATE_TEST_SUITE_P(Models,
                                          Case{"icosahedron", 1, 1}),
                          caseName);
 
-// Noise mode (smoothing 2 cells, feature points within 1.5 cells) on noisy clouds,
-// rotation seed 1: exact counts and arcs, and per-point F1 >= 0.95 where measured so.
-// Not yet, tracked in the noise issue: the U prism at 0.22 (counts exact, one edge
-// links one of its two corners), the icosahedron at 0.32 (32 edges for 30), F1
-// on the cylinder (0.92: recall 0.87 on its circles) and on the tetrahedron at 0.32
-// (0.948).
+// Noise mode (smoothing 2 cells, feature points within 1.25 cells) on noisy clouds,
+// every model under three random rotations at sigma 0.22 and 0.32 cell: exact counts,
+// arcs and everything compareTopology() checks, and per-point F1 >= 0.95.
+// One case is left out, tracked in the noise issue: the U prism at sigma 0.22, seed 1
+// (counts exact, F1 0.99, but one 60-cell edge links only one of its two corners).
 struct NoisyCase
 {
   const char* model;
   double sigma;
-  bool f1;
+  std::uint64_t seed;
 };
 
 class NoiseMode : public testing::TestWithParam<NoisyCase>
@@ -226,37 +226,38 @@ class NoiseMode : public testing::TestWithParam<NoisyCase>
 TEST_P(NoiseMode, RecoversTheTopology)
 {
   const NoisyCase& c = GetParam();
-  const PipelineRun run = runPipeline(c.model, 1, 256, c.sigma);
+  const PipelineRun run = runPipeline(c.model, c.seed, 256, c.sigma);
   const evaluation::TopologyComparison comparison = compareWithTruth(run);
   EXPECT_TRUE(comparison.exact()) << joinLines(comparison.problems);
   const evaluation::PointScores scores = featureScores(run);
-  if (c.f1) {
-    EXPECT_GE(scores.f1(), 0.95)
-      << "precision " << scores.precision() << ", recall " << scores.recall();
-  }
+  EXPECT_GE(scores.f1(), 0.95)
+    << "precision " << scores.precision() << ", recall " << scores.recall();
 }
 
 std::string
 noisyCaseName(const testing::TestParamInfo<NoisyCase>& info)
 {
   return std::string(info.param.model) + "_sigma" +
-         std::to_string(static_cast<int>(std::lround(info.param.sigma * 100)));
+         std::to_string(static_cast<int>(std::lround(info.param.sigma * 100))) +
+         "_seed" + std::to_string(info.param.seed);
+}
+
+std::vector<NoisyCase>
+noisyCases()
+{
+  std::vector<NoisyCase> cases;
+  for (const char* model : {"cube", "tetrahedron", "icosahedron", "triangular_prism",
+                            "u_prism", "box_with_hole", "cylinder"})
+    for (const double sigma : {0.22, 0.32})
+      for (const std::uint64_t seed : {1, 2, 3})
+        if (!(std::string(model) == "u_prism" && sigma == 0.22 && seed == 1))
+          cases.push_back(NoisyCase{model, sigma, seed});
+  return cases;
 }
 
 INSTANTIATE_TEST_SUITE_P(Models,
                          NoiseMode,
-                         testing::Values(NoisyCase{"cube", 0.22, true},
-                                         NoisyCase{"cube", 0.32, true},
-                                         NoisyCase{"tetrahedron", 0.22, true},
-                                         NoisyCase{"tetrahedron", 0.32, false},
-                                         NoisyCase{"icosahedron", 0.22, true},
-                                         NoisyCase{"triangular_prism", 0.22, true},
-                                         NoisyCase{"triangular_prism", 0.32, true},
-                                         NoisyCase{"u_prism", 0.32, true},
-                                         NoisyCase{"box_with_hole", 0.22, true},
-                                         NoisyCase{"box_with_hole", 0.32, true},
-                                         NoisyCase{"cylinder", 0.22, false},
-                                         NoisyCase{"cylinder", 0.32, false}),
+                         testing::ValuesIn(noisyCases()),
                          noisyCaseName);
 
 // At sigma 0.45 cell, at least 90% of the true vertices and edges found (a region of

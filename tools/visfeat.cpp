@@ -90,7 +90,7 @@ printHelp(const char* program)
   print_value("%g", kDefaultOpacity);
   print_info(" cell edges = exact; the paper's ~3 for noise)\n");
   print_info("    -noise_mode       = noisy scans (Gaussian noise up to ~0.5 cell): "
-             "-smooth 2, feature points within 1.5 cells of a curve (default: ");
+             "-smooth 2, feature points within 1.25 cells of a curve (default: ");
   print_value("off");
   print_info(")\n");
   print_info("    -smooth R         = project every point onto the plane of its "

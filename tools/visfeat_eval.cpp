@@ -103,7 +103,7 @@ printHelp(const char* program)
   print_value("0");
   print_info(" cell edges)\n");
   print_info("    -noise_mode        = visfeat's noise mode (smoothing 2 cells, "
-             "feature points within 1.5 cells; default: ");
+             "feature points within 1.25 cells; default: ");
   print_value("off");
   print_info(")\n");
   print_info("    -min_radius R      = visfeat's min_radius (default: the "

@@ -34,9 +34,11 @@ struct SegmentationParameters
   int vertex_reach = 24;
   /** \brief Joining: pieces of one edge (cores that separate the same two faces),
    * split by noise, by a speck or by a vertex region between them, are one edge when
-   * their geodesic distance through the band is at most this many cells (pieces that
-   * touch are always joined). Keep it below the distance between two parallel edges
-   * of the same two faces. Default 24. */
+   * their closest core cells are at most this many cells apart and connected through
+   * the band within sqrt(3) times as many 6-steps (pieces that touch are always
+   * joined; pieces of one straight edge on one line join at any distance). Also the
+   * longest gap bridged in an edge's skeleton. Keep it below the distance between two
+   * parallel edges of the same two faces. Default 24. */
   int join_distance = 24;
   /** \brief Complete regions: edge and vertex regions keep the cells within this many
    * 6-steps of their skeleton (their core cells and the ridge paths that join each
@@ -121,6 +123,14 @@ public:
     return skeleton_centres_;
   }
 
+  /** \brief Per skeleton cell, the unit direction of the middle line through its
+   * centre (the edge's line, a drawn segment, or the main axis of the skeleton around
+   * it); zero where the skeleton is not locally a line (blobs at corners). */
+  const std::vector<Eigen::Vector3f>& skeletonTangents() const
+  {
+    return skeleton_tangents_;
+  }
+
   /** \brief The cores the regions grew from. */
   const ComponentSet& cores() const { return cores_; }
 
@@ -133,6 +143,7 @@ private:
   std::vector<Region> regions_;
   std::vector<char> skeleton_;
   std::vector<Eigen::Vector3f> skeleton_centres_;
+  std::vector<Eigen::Vector3f> skeleton_tangents_;
 };
 
 } // namespace visfeat

@@ -152,7 +152,7 @@ public:
   inline double getSmoothingRadius() const { return smoothing_.radius; }
 
   /** \brief Noise mode for scans with Gaussian noise up to about half a cell: smoothing
-   * radius 2 cells and point_feature_distance 1.5 cells (feature points keep the same
+   * radius 2 cells and point_feature_distance 1.25 cells (feature points keep the same
    * 2-cell bound with the noise left along the surface). Off: smoothing 0 and
    * point_feature_distance 1. Call before setting either individually. */
   inline void setNoiseMode(bool on)
@@ -161,7 +161,7 @@ public:
     segmentation_parameters_.point_feature_distance = on ? kNoisePointDistance : 1.0;
   }
   static constexpr double kNoiseSmoothingRadius = 2.0;
-  static constexpr double kNoisePointDistance = 1.5;
+  static constexpr double kNoisePointDistance = 1.25;
 
   /** \brief Opacity in cell edges (default 0 = exact visibility). The paper suggests 3
    * for noisy scans; measured here, the noise mode (setNoiseMode()) does better. */

@@ -10,7 +10,9 @@
 
 #include <omp.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <limits>
 #include <new>
 
@@ -96,9 +98,9 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::markCellsNearSkeleton()
     if (!skeleton[c])
       continue;
     const CellCoord at = band_.coord(static_cast<CellId>(c));
-    for (int dz = -1; dz <= 1; ++dz)
-      for (int dy = -1; dy <= 1; ++dy)
-        for (int dx = -1; dx <= 1; ++dx) {
+    for (int dz = -2; dz <= 2; ++dz)
+      for (int dy = -2; dy <= 2; ++dy)
+        for (int dx = -2; dx <= 2; ++dx) {
           const CellId n = band_.find(at + CellCoord(dx, dy, dz));
           if (n != kNoCell)
             near_skeleton_[static_cast<std::size_t>(n)] = 1;
@@ -125,25 +127,35 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::refinePointLabel(
     (Eigen::Vector3d(p.x, p.y, p.z) - grid.origin) / grid.cell_size; // cell units
   const CellCoord c = band_.coord(cell);
   const std::vector<Eigen::Vector3f>& centres = segmentation_.skeletonCentres();
+  const std::vector<Eigen::Vector3f>& tangents = segmentation_.skeletonTangents();
+  // Each skeleton cell stands for a short piece of its middle line (its centre, +-1.5
+  // cells along its direction), so points in a gap of up to 3 cells between skeleton
+  // cells (noise thins the ridge) still find the line.
+  constexpr double kHalfPiece = 1.5;
   double near_skeleton = std::numeric_limits<double>::infinity();
   CellId nearest_skeleton = kNoCell;
   double near_face = std::numeric_limits<double>::infinity();
   std::uint32_t face = 0;
-  for (int dz = -1; dz <= 1; ++dz)
-    for (int dy = -1; dy <= 1; ++dy)
-      for (int dx = -1; dx <= 1; ++dx) {
+  for (int dz = -2; dz <= 2; ++dz)
+    for (int dy = -2; dy <= 2; ++dy)
+      for (int dx = -2; dx <= 2; ++dx) {
         const CellId n = band_.find(c + CellCoord(dx, dy, dz));
         if (n == kNoCell)
           continue;
         if (skeleton[static_cast<std::size_t>(n)]) {
-          const double d =
-            (centres[static_cast<std::size_t>(n)].template cast<double>() - q).norm();
-          if (d < near_skeleton) {
-            near_skeleton = d;
+          const Eigen::Vector3d d =
+            q - centres[static_cast<std::size_t>(n)].template cast<double>();
+          const Eigen::Vector3d u =
+            tangents[static_cast<std::size_t>(n)].template cast<double>();
+          const double along = std::clamp(d.dot(u), -kHalfPiece, kHalfPiece);
+          const double distance = (d - along * u).norm();
+          if (distance < near_skeleton) {
+            near_skeleton = distance;
             nearest_skeleton = n;
           }
         }
-        if (segmentation_.cellClass(n) == FeatureClass::kFace) {
+        if (std::abs(dx) <= 1 && std::abs(dy) <= 1 && std::abs(dz) <= 1 &&
+            segmentation_.cellClass(n) == FeatureClass::kFace) {
           const double d = (band_.coord(n).template cast<double>() +
                             Eigen::Vector3d::Constant(0.5) - q)
                              .norm();
