@@ -341,25 +341,11 @@ thinFeatureRegions(const VoxelBand& band,
   for (const auto& [edge, cells] : edge_cores) {
     if (cells.size() < kMinLineCells)
       continue;
+    const CoreLine fit = fitCoreLine(band, cells);
     Line line;
-    for (const CellId c : cells)
-      line.point += band.coord(c).cast<double>();
-    line.point /= static_cast<double>(cells.size());
-    Eigen::Matrix3d scatter = Eigen::Matrix3d::Zero();
-    for (const CellId c : cells) {
-      const Eigen::Vector3d d = band.coord(c).cast<double>() - line.point;
-      scatter += d * d.transpose();
-    }
-    line.direction = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(scatter)
-                       .eigenvectors()
-                       .col(2)
-                       .normalized();
-    double worst = 0.0;
-    for (const CellId c : cells) {
-      const Eigen::Vector3d d = band.coord(c).cast<double>() - line.point;
-      worst = std::max(worst, (d - d.dot(line.direction) * line.direction).norm());
-    }
-    line.straight = worst <= kStraightTolerance;
+    line.point = fit.point;
+    line.direction = fit.direction;
+    line.straight = fit.width <= kStraightTolerance; // any length, unlike joining
     lines[edge] = line;
   }
   // On a straight edge, the middle of the skeleton is its line.
