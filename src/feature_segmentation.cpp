@@ -38,6 +38,10 @@ constexpr double kElongation = 4.0;
 /** Smallest eigenvalue of sum(I - u u^T) over a corner's edge directions u: 0 when they
  * are parallel, 1 - cos(angle) for two edges at an angle (0.13 at 30 degrees). */
 constexpr double kMinCornerConditioning = 0.1;
+/** A drawn edge ends at its first core cell with this many more within this many
+ * cells beyond it along the line. */
+constexpr std::size_t kEdgeEndCells = 2;
+constexpr double kEdgeEndRun = 3.0;
 /** Cells of a drawn edge within this distance of the corner join the vertex. */
 constexpr double kCornerCells = 1.5;
 
@@ -403,16 +407,27 @@ thinFeatureRegions(const VoxelBand& band,
       continue;
     for (const std::uint32_t e : edges) {
       const Line& line = lines[e];
-      // The end of the edge's cores on the corner's side.
-      double t_end = std::numeric_limits<double>::infinity();
-      double t_corner = (corner - line.point).dot(line.direction);
-      double best = std::numeric_limits<double>::infinity();
+      // The end of the edge's cores on the corner's side: the nearest core cell with
+      // more of its edge just beyond it. Noise leaves stray core cells between the
+      // corner and the edge's body; drawn to one of those, the segment would stop
+      // short of the body and leave the edge apart from its vertex.
+      const double t_corner = (corner - line.point).dot(line.direction);
+      std::vector<std::pair<double, double>> along; // (from the corner, t)
       for (const CellId c : edge_cores[e]) {
         const double t =
           (band.coord(c).cast<double>() - line.point).dot(line.direction);
-        if (std::abs(t - t_corner) < best) {
-          best = std::abs(t - t_corner);
-          t_end = t;
+        along.emplace_back(std::abs(t - t_corner), t);
+      }
+      std::sort(along.begin(), along.end());
+      double t_end = along.front().second;
+      for (std::size_t i = 0; i < along.size(); ++i) {
+        std::size_t beyond = 0;
+        for (std::size_t j = i + 1;
+             j < along.size() && along[j].first <= along[i].first + kEdgeEndRun; ++j)
+          ++beyond;
+        if (beyond >= kEdgeEndCells) {
+          t_end = along[i].second;
+          break;
         }
       }
       const Eigen::Vector3d end = line.point + t_end * line.direction;

@@ -211,8 +211,8 @@ INSTANTIATE_TEST_SUITE_P(Models,
 // Noise mode (smoothing 2 cells, feature points within 1.25 cells) on noisy clouds,
 // every model under three random rotations at sigma 0.22 and 0.32 cell: exact counts,
 // arcs and everything compareTopology() checks, and per-point F1 >= 0.95.
-// One case is left out, tracked in the noise issue: the U prism at sigma 0.22, seed 1
-// (counts exact, F1 0.99, but one 60-cell edge links only one of its two corners).
+// The U prism at sigma 0.22, seed 1 once linked one 60-cell edge to only one corner:
+// stray core cells near the corner were taken for the end of the edge's body.
 struct NoisyCase
 {
   const char* model;
@@ -250,8 +250,7 @@ noisyCases()
                             "u_prism", "box_with_hole", "cylinder"})
     for (const double sigma : {0.22, 0.32})
       for (const std::uint64_t seed : {1, 2, 3})
-        if (!(std::string(model) == "u_prism" && sigma == 0.22 && seed == 1))
-          cases.push_back(NoisyCase{model, sigma, seed});
+        cases.push_back(NoisyCase{model, sigma, seed});
   return cases;
 }
 

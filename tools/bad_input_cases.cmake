@@ -28,6 +28,8 @@ set(VISFEAT_BAD_INPUT_CASES
   "threads_negative|-threads must be in&&got -1"
   "opacity_nan|-opacity expects a number, got 'nan'"
   "min_radius_above_max|-min_radius 20 exceeds -max_radius 10"
+  "paper_noise_and_noise_mode|-paper_noise and -noise_mode are two settings"
+  "paper_noise_and_opacity|give -paper_noise or -opacity"
   "unknown_option|unknown option -resolutoin"
   "missing_value|option -resolution needs a value"
   "mesh_points_zero|-mesh_points must be in&&got 0"

@@ -13,11 +13,8 @@ cmake_minimum_required(VERSION 3.16) # policies NEW (CMP0053: plain ${} expansio
 
 include("${CMAKE_CURRENT_LIST_DIR}/bad_input_cases.cmake")
 
-foreach(var VISFEAT GENERATE WORK_DIR CASE)
-  if(NOT DEFINED ${var} OR "${${var}}" STREQUAL "")
-    message(FATAL_ERROR "bad_input_test.cmake: -D${var}=... is required")
-  endif()
-endforeach()
+include("${CMAKE_CURRENT_LIST_DIR}/script_test_common.cmake")
+require_definitions(bad_input_test.cmake VISFEAT GENERATE WORK_DIR CASE)
 
 set(expected "")
 foreach(entry IN LISTS VISFEAT_BAD_INPUT_CASES)
@@ -33,8 +30,7 @@ if(expected STREQUAL "")
 endif()
 
 set(dir "${WORK_DIR}/${CASE}")
-file(REMOVE_RECURSE "${dir}")
-file(MAKE_DIRECTORY "${dir}")
+fresh_directory("${dir}")
 
 # A PCD header for n points with fields x y z (ASCII data follows).
 function(pcd_header n out_var)
@@ -147,6 +143,10 @@ elseif(CASE STREQUAL "opacity_nan")
   set(args -opacity nan)
 elseif(CASE STREQUAL "min_radius_above_max")
   set(args -min_radius 20 -max_radius 10)
+elseif(CASE STREQUAL "paper_noise_and_noise_mode")
+  set(args -paper_noise -noise_mode)
+elseif(CASE STREQUAL "paper_noise_and_opacity")
+  set(args -paper_noise -opacity 2)
 elseif(CASE STREQUAL "unknown_option")
   set(args -resolutoin 64)
 elseif(CASE STREQUAL "missing_value")

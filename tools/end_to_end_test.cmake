@@ -15,15 +15,11 @@
 
 cmake_minimum_required(VERSION 3.16) # policies NEW (CMP0053: plain ${} expansion)
 
-foreach(var VISFEAT GENERATE WORK_DIR CASE)
-  if(NOT DEFINED ${var} OR "${${var}}" STREQUAL "")
-    message(FATAL_ERROR "end_to_end_test.cmake: -D${var}=... is required")
-  endif()
-endforeach()
+include("${CMAKE_CURRENT_LIST_DIR}/script_test_common.cmake")
+require_definitions(end_to_end_test.cmake VISFEAT GENERATE WORK_DIR CASE)
 
 set(dir "${WORK_DIR}/${CASE}")
-file(REMOVE_RECURSE "${dir}")
-file(MAKE_DIRECTORY "${dir}")
+fresh_directory("${dir}")
 set_property(GLOBAL PROPERTY e2e_failures "")
 
 function(fail text)

@@ -10,18 +10,10 @@
 
 cmake_minimum_required(VERSION 3.16)
 
-foreach(var EVAL WORK_DIR)
-  if(NOT DEFINED ${var} OR "${${var}}" STREQUAL "")
-    message(FATAL_ERROR "eval_test.cmake: -D${var}=... is required")
-  endif()
-endforeach()
+include("${CMAKE_CURRENT_LIST_DIR}/script_test_common.cmake")
+require_definitions(eval_test.cmake EVAL WORK_DIR)
 
-file(REMOVE_RECURSE "${WORK_DIR}")
-file(MAKE_DIRECTORY "${WORK_DIR}")
-
-function(report_failure text)
-  message(SEND_ERROR "FAIL: ${text}")
-endfunction()
+fresh_directory("${WORK_DIR}")
 
 set(peers pcl)
 if(HAVE_CGAL)

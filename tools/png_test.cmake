@@ -12,28 +12,10 @@
 
 cmake_minimum_required(VERSION 3.16)
 
-foreach(var VISFEAT GENERATE WORK_DIR)
-  if(NOT DEFINED ${var} OR "${${var}}" STREQUAL "")
-    message(FATAL_ERROR "png_test.cmake: -D${var}=... is required")
-  endif()
-endforeach()
+include("${CMAKE_CURRENT_LIST_DIR}/script_test_common.cmake")
+require_definitions(png_test.cmake VISFEAT GENERATE WORK_DIR)
 
-file(REMOVE_RECURSE "${WORK_DIR}")
-file(MAKE_DIRECTORY "${WORK_DIR}")
-
-function(report_failure text)
-  message(SEND_ERROR "FAIL: ${text}")
-endfunction()
-
-# run(<name> <command...>): sets <name>_rc and <name>_out (stdout + stderr).
-function(run name)
-  execute_process(COMMAND ${ARGN}
-    RESULT_VARIABLE rc
-    OUTPUT_VARIABLE out
-    ERROR_VARIABLE out)
-  set(${name}_rc "${rc}" PARENT_SCOPE)
-  set(${name}_out "${out}" PARENT_SCOPE)
-endfunction()
+fresh_directory("${WORK_DIR}")
 
 # expect_failure(<name> <pattern> <outputs> <command...>): non-zero exit, exactly one
 # error line matching <pattern>, none of the ;-list <outputs> (nor .tmp) left behind.

@@ -1,6 +1,7 @@
 # Smoke test of the command-line tools, run by ctest as
 #   cmake -DVISFEAT=<visfeat> -DGENERATE=<visfeat_generate> -DWORK_DIR=<dir> -P smoke_test.cmake
 # 1. visfeat_generate cube -> visfeat -voxels: exit codes, PCD headers (fields, POINTS);
+#    -paper_noise: opacity 3 on the summary line and in the graph JSON;
 #    every CAD model of visfeat_generate with its -truth JSON (counts).
 # 2. .ply input (double coordinates, upper-case extension) and an input that already has
 #    a label field.
@@ -9,28 +10,10 @@
 
 cmake_minimum_required(VERSION 3.16) # policies NEW (CMP0053: plain ${} expansion)
 
-foreach(var VISFEAT GENERATE WORK_DIR)
-  if(NOT DEFINED ${var} OR "${${var}}" STREQUAL "")
-    message(FATAL_ERROR "smoke_test.cmake: -D${var}=... is required")
-  endif()
-endforeach()
+include("${CMAKE_CURRENT_LIST_DIR}/script_test_common.cmake")
+require_definitions(smoke_test.cmake VISFEAT GENERATE WORK_DIR)
 
-file(REMOVE_RECURSE "${WORK_DIR}")
-file(MAKE_DIRECTORY "${WORK_DIR}")
-
-function(report_failure text)
-  message(SEND_ERROR "FAIL: ${text}")
-endfunction()
-
-# run(<name> <command...>): sets <name>_rc and <name>_out (stdout + stderr).
-function(run name)
-  execute_process(COMMAND ${ARGN}
-    RESULT_VARIABLE rc
-    OUTPUT_VARIABLE out
-    ERROR_VARIABLE out)
-  set(${name}_rc "${rc}" PARENT_SCOPE)
-  set(${name}_out "${out}" PARENT_SCOPE)
-endfunction()
+fresh_directory("${WORK_DIR}")
 
 function(expect_success name)
   run(${name} ${ARGN})
@@ -113,6 +96,24 @@ if(NOT quiet_out STREQUAL "")
   report_failure("visfeat -q printed:\n${visfeat_quiet_out}")
 endif()
 expect_header("${WORK_DIR}/cube_q.pcd" "${cube_out_fields}" "${cube_points}")
+
+# -paper_noise: the paper's opacity, on the summary line and in the graph's parameters.
+set(paper_graph "${WORK_DIR}/cube_paper.json")
+expect_success(visfeat_paper "${VISFEAT}" "${cube}" "${WORK_DIR}/cube_paper.pcd"
+               -resolution 48 -paper_noise -graph "${paper_graph}")
+if(NOT visfeat_paper_out MATCHES "opacity 3, smoothing 0,")
+  report_failure("visfeat -paper_noise: no 'opacity 3, smoothing 0,' in\n"
+                 "${visfeat_paper_out}")
+endif()
+if(EXISTS "${paper_graph}")
+  file(READ "${paper_graph}" paper_json)
+  if(NOT paper_json MATCHES "\"opacity\": 3\\.0+[,}]"
+     OR NOT paper_json MATCHES "\"paper_noise\": true")
+    report_failure("${paper_graph}: no opacity 3 and paper_noise true in its parameters")
+  endif()
+else()
+  report_failure("${paper_graph} was not written")
+endif()
 
 # Every CAD model, with its truth: the counts in the JSON and on stdout.
 # model vertices edges faces

@@ -88,7 +88,12 @@ printHelp(const char* program)
   print_info("    -opacity D        = blocked length tolerated between two "
              "cells (default: ");
   print_value("%g", kDefaultOpacity);
-  print_info(" cell edges = exact; the paper's ~3 for noise)\n");
+  print_info(" cell edges = exact)\n");
+  print_info("    -paper_noise      = the paper's setting for noise (its Section 6): "
+             "-opacity ");
+  print_value("%g",
+              visfeat::VisibilityFeatureEstimation<pcl::PointXYZ>::kPaperNoiseOpacity);
+  print_info(", no smoothing; -noise_mode does better on our measurements\n");
   print_info("    -noise_mode       = noisy scans (Gaussian noise up to ~0.5 cell): "
              "-smooth 2, feature points within 1.25 cells of a curve (default: ");
   print_value("off");
@@ -205,6 +210,7 @@ struct Options
   bool regions = true;
   double opacity = kDefaultOpacity;
   bool noise_mode = false;
+  bool paper_noise = false;
   double smooth = -1.0; // -1 = as the mode says
   int threads = kDefaultThreads;
   bool repair = true;
@@ -311,13 +317,15 @@ run(int argc, char** argv)
     {"-resolution", "-max_radius", "-min_radius", "-vertex_cells", "-dimensionality",
      "-opacity", "-smooth", "-threads", "-memory_limit_mb", "-voxels", "-graph",
      "-mesh_points", "-mesh_spacing", "-png", "-png_radius", "-png_size"},
-    {"-no_repair", "-raw", "-no_regions", "-noise_mode", "-q", "-h", "--help"});
+    {"-no_repair", "-raw", "-no_regions", "-noise_mode", "-paper_noise", "-q", "-h",
+     "--help"});
   if (!args.ok())
     return fail(args.error());
 
   Options opt;
   opt.quiet = args.has("-q");
   opt.noise_mode = args.has("-noise_mode");
+  opt.paper_noise = args.has("-paper_noise");
   if (opt.quiet)
     vt::beQuiet();
   else
@@ -356,6 +364,13 @@ run(int argc, char** argv)
       !args.getReal("-mesh_spacing", -std::numeric_limits<double>::max(),
                     std::numeric_limits<double>::max(), opt.mesh.spacing, error))
     return fail(error);
+  if (opt.paper_noise && opt.noise_mode)
+    return fail("-paper_noise and -noise_mode are two settings for noise: give one");
+  if (opt.paper_noise && args.has("-opacity"))
+    return fail("-paper_noise sets the opacity: give -paper_noise or -opacity");
+  if (opt.paper_noise)
+    opt.opacity =
+      visfeat::VisibilityFeatureEstimation<pcl::PointXYZ>::kPaperNoiseOpacity;
   if (args.has("-mesh_spacing") && !(opt.mesh.spacing > 0.0))
     return fail("-mesh_spacing must be positive, got " + args.value("-mesh_spacing"));
   if (args.has("-mesh_spacing") && args.has("-mesh_points"))
@@ -638,6 +653,7 @@ run(int argc, char** argv)
       {"complete_regions", sp.complete_regions ? "true" : "false"},
       {"opacity", std::to_string(opt.opacity)},
       {"noise_mode", opt.noise_mode ? "true" : "false"},
+      {"paper_noise", opt.paper_noise ? "true" : "false"},
       {"smoothing_radius", std::to_string(estimator.getSmoothingRadius())},
       {"repair", opt.repair ? "true" : "false"},
       {"point_feature_distance", std::to_string(sp.point_feature_distance)},
