@@ -132,8 +132,13 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::refinePointLabel(
   // cells along its direction), so points in a gap of up to 3 cells between skeleton
   // cells (noise thins the ridge) still find the line.
   constexpr double kHalfPiece = 1.5;
+  // A vertex's skeleton is a few cells at its corner, where the line pieces of its
+  // edges end too: a point within reach of both goes to the vertex, or the corner might
+  // keep no point at all.
   double near_skeleton = std::numeric_limits<double>::infinity();
   CellId nearest_skeleton = kNoCell;
+  double near_vertex = std::numeric_limits<double>::infinity();
+  CellId nearest_vertex = kNoCell;
   double near_face = std::numeric_limits<double>::infinity();
   std::uint32_t face = 0;
   for (int dz = -2; dz <= 2; ++dz)
@@ -153,6 +158,11 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::refinePointLabel(
             near_skeleton = distance;
             nearest_skeleton = n;
           }
+          if (distance < near_vertex &&
+              segmentation_.cellClass(n) == FeatureClass::kVertex) {
+            near_vertex = distance;
+            nearest_vertex = n;
+          }
         }
         if (std::abs(dx) <= 1 && std::abs(dy) <= 1 && std::abs(dz) <= 1 &&
             segmentation_.cellClass(n) == FeatureClass::kFace) {
@@ -165,6 +175,8 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::refinePointLabel(
           }
         }
       }
+  if (near_vertex <= limit)
+    nearest_skeleton = nearest_vertex;
   if (near_skeleton <= limit) {
     label = segmentation_.cellLabels()[static_cast<std::size_t>(nearest_skeleton)];
     cls = segmentation_.cellClass(nearest_skeleton);
