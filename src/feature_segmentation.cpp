@@ -52,10 +52,10 @@ struct CoreLine
   Eigen::Vector3d direction = Eigen::Vector3d::UnitX();
   double length = 0.0; // extent along the direction
   double width = 0.0;  // largest distance of a cell from the line
-  bool straight() const
-  {
-    return width <= kStraightTolerance && length >= kMinJoinLength;
-  }
+  /** Its cells lie within kStraightTolerance of the line, at any length. */
+  bool narrow() const { return width <= kStraightTolerance; }
+  /** Narrow and long enough to join other pieces on its line. */
+  bool straight() const { return narrow() && length >= kMinJoinLength; }
   /** `other` (shorter) continues this straight line: it is straight, parallel, and its
    * middle lies on this line. */
   bool onLine(const CoreLine& other) const
@@ -207,6 +207,9 @@ thinFeatureRegions(const VoxelBand& band,
       (cls[labels[c]] == FeatureClass::kVertex ? vertex_cores : edge_cores)[labels[c]]
         .push_back(static_cast<CellId>(c));
   }
+  std::map<std::uint32_t, CoreLine> core_line; // per edge, fitted once
+  for (const auto& [edge, cells] : edge_cores)
+    core_line[edge] = fitCoreLine(band, cells);
 
   // Vertex-edge pairs: regions that touch, and each end of an edge (the farthest pair
   // of its core cells) with the vertex nearest to it, within reach.
@@ -231,9 +234,8 @@ thinFeatureRegions(const VoxelBand& band,
   // A straight edge whose core stops more than `reach` short of its corner (a shallow
   // crease under noise): the vertex nearest ahead of that end on its line, within
   // twice the reach.
-  auto vertexAhead = [&](const std::vector<CellId>& cells,
-                         CellId end) -> std::uint32_t {
-    const CoreLine line = fitCoreLine(band, cells);
+  auto vertexAhead = [&](std::uint32_t edge, CellId end) -> std::uint32_t {
+    const CoreLine& line = core_line[edge];
     if (!line.straight())
       return 0;
     const Eigen::Vector3d from = band.coord(end).cast<double>();
@@ -280,7 +282,7 @@ thinFeatureRegions(const VoxelBand& band,
               e.vertex[k] = vertex;
             }
         if (e.vertex[k] == 0)
-          e.vertex[k] = vertexAhead(cells, e.cell[k]);
+          e.vertex[k] = vertexAhead(edge, e.cell[k]);
         if (e.vertex[k] != 0)
           pairs.emplace(e.vertex[k], edge);
       }
@@ -335,26 +337,13 @@ thinFeatureRegions(const VoxelBand& band,
   // edges rather than at the tip. Where a vertex has two or more straight edges, its
   // corner is the point nearest to their lines (least squares), and each edge is drawn
   // from its core's end to that corner.
-  struct Line
-  {
-    Eigen::Vector3d point = Eigen::Vector3d::Zero(); // on the line, cell units
-    Eigen::Vector3d direction = Eigen::Vector3d::UnitX();
-    bool straight = false;
+  // Straight here: narrow at any length, unlike joining.
+  auto isStraightEdge = [&](std::uint32_t edge) {
+    return edge_cores[edge].size() >= kMinLineCells && core_line[edge].narrow();
   };
-  std::map<std::uint32_t, Line> lines;
-  for (const auto& [edge, cells] : edge_cores) {
-    if (cells.size() < kMinLineCells)
-      continue;
-    const CoreLine fit = fitCoreLine(band, cells);
-    Line line;
-    line.point = fit.point;
-    line.direction = fit.direction;
-    line.straight = fit.width <= kStraightTolerance; // any length, unlike joining
-    lines[edge] = line;
-  }
   // On a straight edge, the middle of the skeleton is its line.
-  for (const auto& [edge, line] : lines)
-    if (line.straight)
+  for (const auto& [edge, line] : core_line)
+    if (isStraightEdge(edge))
       for (const CellId c : edge_cores[edge]) {
         const Eigen::Vector3d d = band.coord(c).cast<double>() - line.point;
         setCentre(c, line.point + d.dot(line.direction) * line.direction,
@@ -362,7 +351,7 @@ thinFeatureRegions(const VoxelBand& band,
       }
   std::map<std::uint32_t, std::vector<std::uint32_t>> straight_edges_of;
   for (const auto& [vertex, edge] : pairs)
-    if (lines.count(edge) && lines[edge].straight)
+    if (core_line.count(edge) && isStraightEdge(edge))
       straight_edges_of[vertex].push_back(edge);
   auto nearestCell = [&](const Eigen::Vector3d& x) {
     const CellCoord at = x.array().round().cast<int>().matrix();
@@ -389,7 +378,7 @@ thinFeatureRegions(const VoxelBand& band,
     Eigen::Matrix3d a = Eigen::Matrix3d::Zero();
     Eigen::Vector3d b = Eigen::Vector3d::Zero();
     for (const std::uint32_t e : edges) {
-      const Line& line = lines[e];
+      const CoreLine& line = core_line[e];
       const Eigen::Matrix3d across =
         Eigen::Matrix3d::Identity() - line.direction * line.direction.transpose();
       a += across;
@@ -406,7 +395,7 @@ thinFeatureRegions(const VoxelBand& band,
     if (!(to_vertex <= reach) || nearestCell(corner) == kNoCell)
       continue;
     for (const std::uint32_t e : edges) {
-      const Line& line = lines[e];
+      const CoreLine& line = core_line[e];
       // The end of the edge's cores on the corner's side: the nearest core cell with
       // more of its edge just beyond it. Noise leaves stray core cells between the
       // corner and the edge's body; drawn to one of those, the segment would stop

@@ -27,6 +27,7 @@ function(fail text)
 endfunction()
 
 # run(<command...>): sets run_out (stdout + stderr); a non-zero exit is a failure.
+# (Replaces script_test_common.cmake's run(name ...): here a failed command ends the case.)
 macro(run)
   execute_process(COMMAND ${ARGN} RESULT_VARIABLE run_rc OUTPUT_VARIABLE run_out
                   ERROR_VARIABLE run_out)
