@@ -1,6 +1,6 @@
 #include "band_fixtures.h"
 
-#include <visfeat/synthetic_shapes.h>
+#include <support/synthetic_shapes.h>
 #include <visfeat/voxel_band_from_cloud.h>
 
 #include <Eigen/Geometry>

@@ -2,8 +2,8 @@
 
 // Small bands and clouds the tests generate for themselves (no files are read).
 
-#include <visfeat/grid_spec.h>
-#include <visfeat/voxel_band.h>
+#include <visfeat/core/band/voxel_band.h>
+#include <visfeat/core/grid/grid_spec.h>
 
 #include <pcl/point_cloud.h>
 #include <pcl/point_types.h>

@@ -1,9 +1,9 @@
 // The synthetic CAD models (cad_models.h): truth counts and incidences, the Euler
 // characteristic, exact curve and face distances, uniform sampling, rotations, noise.
 
-#include <visfeat/cad_models.h>
-#include <visfeat/error.h>
-#include <visfeat/synthetic_shapes.h>
+#include <support/cad_models.h>
+#include <support/synthetic_shapes.h>
+#include <visfeat/core/common/error.h>
 
 #include <gtest/gtest.h>
 

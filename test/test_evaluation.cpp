@@ -3,11 +3,11 @@
 // on scores whose best threshold is known, and the topology comparison on a real run
 // and on a deliberately broken copy of it.
 
-#include <visfeat/cad_models.h>
-#include <visfeat/error.h>
-#include <visfeat/evaluation.h>
-#include <visfeat/feature_class.h>
-#include <visfeat/synthetic_shapes.h>
+#include <support/cad_models.h>
+#include <support/evaluation.h>
+#include <support/synthetic_shapes.h>
+#include <visfeat/core/common/error.h>
+#include <visfeat/core/common/feature_class.h>
 #include <visfeat/visibility_feature_estimation.h>
 
 #include <gtest/gtest.h>

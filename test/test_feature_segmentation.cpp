@@ -4,12 +4,12 @@
 // curves. The cases listed are the ones the current method gets exactly right; the
 // closing notes of the components issue list those it does not (yet).
 
-#include <visfeat/cad_models.h>
-#include <visfeat/error.h>
-#include <visfeat/evaluation.h>
-#include <visfeat/feature_segmentation.h>
-#include <visfeat/synthetic_shapes.h>
-#include <visfeat/topology_graph.h>
+#include <support/cad_models.h>
+#include <support/evaluation.h>
+#include <support/synthetic_shapes.h>
+#include <visfeat/core/common/error.h>
+#include <visfeat/core/graph/topology_graph.h>
+#include <visfeat/core/segmentation/feature_segmentation.h>
 #include <visfeat/visibility_feature_estimation.h>
 
 #include <gtest/gtest.h>

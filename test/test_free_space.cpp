@@ -5,9 +5,9 @@
 #include "band_fixtures.h"
 #include "reference/brute_force.h"
 
-#include <visfeat/free_space.h>
-#include <visfeat/segment_table.h>
-#include <visfeat/voxel_band.h>
+#include <visfeat/core/band/voxel_band.h>
+#include <visfeat/core/visibility/free_space.h>
+#include <visfeat/core/visibility/segment_table.h>
 
 #include <gtest/gtest.h>
 

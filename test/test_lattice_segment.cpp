@@ -4,7 +4,7 @@
 #include "band_fixtures.h"
 #include "reference/brute_force.h"
 
-#include <visfeat/lattice_segment.h>
+#include <visfeat/core/visibility/lattice_segment.h>
 
 #include <gtest/gtest.h>
 

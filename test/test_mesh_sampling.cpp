@@ -1,8 +1,10 @@
 // Mesh input (mesh_sampling.h): area-weighted uniform sampling of triangles and the
 // strict OFF reader.
 
-#include <visfeat/error.h>
-#include <visfeat/mesh_sampling.h>
+#include <visfeat/core/common/error.h>
+#include <visfeat/core/mesh/mesh_sampling.h>
+
+#include <Eigen/Geometry>
 
 #include <gtest/gtest.h>
 

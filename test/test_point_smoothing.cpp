@@ -1,8 +1,8 @@
 // smoothPoints: noise goes down on planes, exact planes stay, creases keep their sides
 // beyond the radius, results do not depend on the thread count, bad input is refused.
-#include <visfeat/error.h>
-#include <visfeat/grid_spec.h>
-#include <visfeat/point_smoothing.h>
+#include <visfeat/core/band/point_smoothing.h>
+#include <visfeat/core/common/error.h>
+#include <visfeat/core/grid/grid_spec.h>
 
 #include <gtest/gtest.h>
 

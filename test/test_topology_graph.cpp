@@ -4,10 +4,10 @@
 
 #include "band_fixtures.h"
 
-#include <visfeat/error.h>
-#include <visfeat/feature_class.h>
-#include <visfeat/topology_graph.h>
-#include <visfeat/voxel_band.h>
+#include <visfeat/core/band/voxel_band.h>
+#include <visfeat/core/common/error.h>
+#include <visfeat/core/common/feature_class.h>
+#include <visfeat/core/graph/topology_graph.h>
 
 #include <boost/graph/connected_components.hpp>
 

@@ -5,10 +5,10 @@
 #include "band_fixtures.h"
 #include "reference/brute_force.h"
 
-#include <visfeat/error.h>
-#include <visfeat/free_space.h>
-#include <visfeat/visibility_map.h>
-#include <visfeat/voxel_band.h>
+#include <visfeat/core/band/voxel_band.h>
+#include <visfeat/core/common/error.h>
+#include <visfeat/core/visibility/free_space.h>
+#include <visfeat/core/visibility/visibility_map.h>
 #include <visfeat/voxel_band_from_cloud.h>
 
 #include <gtest/gtest.h>

@@ -3,9 +3,9 @@
 
 #include "band_fixtures.h"
 
-#include <visfeat/cell_index.h>
-#include <visfeat/error.h>
-#include <visfeat/voxel_band.h>
+#include <visfeat/core/band/voxel_band.h>
+#include <visfeat/core/common/error.h>
+#include <visfeat/core/grid/cell_index.h>
 #include <visfeat/voxel_band_from_cloud.h>
 
 #include <gtest/gtest.h>

@@ -2,7 +2,7 @@
 
 #include "render_picture.h"
 
-#include <visfeat/feature_class.h>
+#include <visfeat/core/common/feature_class.h>
 
 #include <algorithm>
 #include <cerrno>

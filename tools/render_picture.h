@@ -10,8 +10,8 @@
 
 #include "tool_utils.h"
 
+#include <visfeat/core/graph/topology_graph.h>
 #include <visfeat/point_types.h>
-#include <visfeat/topology_graph.h>
 
 #include <pcl/point_cloud.h>
 

@@ -7,9 +7,9 @@
 
 #include <pcl/console/time.h>
 
-#include <visfeat/error.h>
-#include <visfeat/grid_spec.h>
-#include <visfeat/mesh_sampling.h>
+#include <visfeat/core/common/error.h>
+#include <visfeat/core/grid/grid_spec.h>
+#include <visfeat/core/mesh/mesh_sampling.h>
 
 #include <pcl/PolygonMesh.h>
 #include <pcl/common/point_tests.h>

@@ -7,12 +7,12 @@
 #include "tool_utils.h"
 
 #include <fstream>
-#include <visfeat/error.h>
-#include <visfeat/grid_spec.h>
-#include <visfeat/memory_budget.h>
+#include <visfeat/core/common/error.h>
+#include <visfeat/core/common/memory_budget.h>
+#include <visfeat/core/grid/grid_spec.h>
+#include <visfeat/core/visibility/visibility_map.h>
 #include <visfeat/point_types.h>
 #include <visfeat/visibility_feature_estimation.h>
-#include <visfeat/visibility_map.h>
 
 #include <pcl/console/parse.h>
 #include <pcl/console/print.h>

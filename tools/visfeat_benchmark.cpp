@@ -4,14 +4,15 @@
 
 #include "tool_utils.h"
 
-#include <visfeat/cad_models.h>
-#include <visfeat/error.h>
-#include <visfeat/free_space.h>
-#include <visfeat/grid_spec.h>
+#include <support/cad_models.h>
+#include <support/synthetic_shapes.h>
+#include <visfeat/core/common/error.h>
+#include <visfeat/core/common/threads.h>
+#include <visfeat/core/grid/grid_spec.h>
+#include <visfeat/core/visibility/free_space.h>
+#include <visfeat/core/visibility/visibility_map.h>
 #include <visfeat/point_types.h>
-#include <visfeat/synthetic_shapes.h>
 #include <visfeat/visibility_feature_estimation.h>
-#include <visfeat/visibility_map.h>
 
 #include <pcl/console/parse.h>
 #include <pcl/console/print.h>
@@ -31,7 +32,6 @@
 
 #include <sys/resource.h>
 #ifdef _OPENMP
-#include <omp.h>
 #endif
 
 using namespace pcl::console;
@@ -414,10 +414,7 @@ run(int argc, char** argv)
 
   // Notes: on stdout for the table, on stderr with -csv so stdout stays pure CSV.
   FILE* notes = s.csv ? stderr : stdout;
-  int omp_threads = 1;
-#ifdef _OPENMP
-  omp_threads = omp_get_max_threads();
-#endif
+  const int omp_threads = visfeat::resolveThreads(0);
   const PeakMemory memory;
   std::fprintf(
     notes,

@@ -7,14 +7,15 @@
 #include "peers.h"
 #include "tool_utils.h"
 
-#include <visfeat/cad_models.h>
-#include <visfeat/evaluation.h>
-#include <visfeat/feature_class.h>
-#include <visfeat/grid_spec.h>
+#include <support/cad_models.h>
+#include <support/evaluation.h>
+#include <support/synthetic_shapes.h>
+#include <visfeat/core/common/feature_class.h>
+#include <visfeat/core/common/threads.h>
+#include <visfeat/core/grid/grid_spec.h>
+#include <visfeat/core/visibility/visibility_map.h>
 #include <visfeat/point_types.h>
-#include <visfeat/synthetic_shapes.h>
 #include <visfeat/visibility_feature_estimation.h>
-#include <visfeat/visibility_map.h>
 
 #include <pcl/console/print.h>
 
@@ -33,7 +34,6 @@
 #include <vector>
 
 #ifdef _OPENMP
-#include <omp.h>
 #endif
 
 using namespace pcl::console;
@@ -536,10 +536,7 @@ run(int argc, char** argv)
       return fail(error);
   }
 
-  int omp_threads = 1;
-#ifdef _OPENMP
-  omp_threads = omp_get_max_threads();
-#endif
+  const int omp_threads = visfeat::resolveThreads(0);
   std::printf(
     "# visfeat_eval: resolution %d, spacing %g cells, seed %lld, threads %d%s "
     "(%u hardware); opacity %s%s; recall within 1 cell, precision within 2 "

@@ -5,11 +5,11 @@
 
 #include "tool_utils.h"
 
-#include <visfeat/cad_models.h>
-#include <visfeat/error.h>
-#include <visfeat/grid_spec.h>
-#include <visfeat/memory_budget.h>
-#include <visfeat/synthetic_shapes.h>
+#include <support/cad_models.h>
+#include <support/synthetic_shapes.h>
+#include <visfeat/core/common/error.h>
+#include <visfeat/core/common/memory_budget.h>
+#include <visfeat/core/grid/grid_spec.h>
 
 #include <pcl/console/parse.h>
 #include <pcl/console/print.h>

@@ -1,6 +1,6 @@
 #pragma once
 
-#include <visfeat/feature_class.h>
+#include <visfeat/core/common/feature_class.h>
 
 #include <pcl/point_types.h>
 #include <pcl/register_point_struct.h>

@@ -1,12 +1,12 @@
 #pragma once
 
-#include <visfeat/feature_segmentation.h>
-#include <visfeat/free_space.h>
-#include <visfeat/point_smoothing.h>
+#include <visfeat/core/band/point_smoothing.h>
+#include <visfeat/core/band/voxel_band.h>
+#include <visfeat/core/graph/topology_graph.h>
+#include <visfeat/core/segmentation/feature_segmentation.h>
+#include <visfeat/core/visibility/free_space.h>
+#include <visfeat/core/visibility/visibility_map.h>
 #include <visfeat/point_types.h>
-#include <visfeat/topology_graph.h>
-#include <visfeat/visibility_map.h>
-#include <visfeat/voxel_band.h>
 
 #include <pcl/features/feature.h>
 

@@ -1,6 +1,6 @@
 #pragma once
 
-#include <visfeat/voxel_band.h>
+#include <visfeat/core/band/voxel_band.h>
 
 #include <pcl/point_cloud.h>
 

@@ -7,7 +7,7 @@
 // the library: it uses GridSpec / CellCoord as plain types (both header-only) and never
 // calls FreeSpace, SegmentTable, decomposeLatticeSegment, VoxelBand or VisibilityMap.
 
-#include <visfeat/grid_spec.h>
+#include <visfeat/core/grid/grid_spec.h>
 
 #include <Eigen/Core>
 

@@ -1,14 +1,14 @@
 #pragma once
 
-#include <visfeat/error.h>
+#include <visfeat/core/common/error.h>
+#include <visfeat/core/common/memory_budget.h>
 #include <visfeat/impl/voxel_band_from_cloud.hpp>
-#include <visfeat/memory_budget.h>
 #include <visfeat/visibility_feature_estimation.h>
 #include <visfeat/voxel_band_from_cloud.h>
 
 #include <pcl/common/point_tests.h>
 
-#include <omp.h>
+#include <visfeat/core/common/threads.h>
 
 #include <algorithm>
 #include <chrono>
@@ -69,8 +69,7 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::initCompute()
     const std::size_t points = surface_->size();
     const std::size_t cells =
       static_cast<std::size_t>(std::min<std::uint64_t>(points, grid_.cellCount()));
-    const int threads =
-      visibility_.threads > 0 ? visibility_.threads : omp_get_max_threads();
+    const int threads = resolveThreads(visibility_.threads);
     const std::uint64_t octree_bytes = std::uint64_t{160} * cells + 4 * points;
     const std::uint64_t estimate =
       FreeSpace::estimateBytes(grid_) + VoxelBand::estimateBytes(grid_, cells, points) +

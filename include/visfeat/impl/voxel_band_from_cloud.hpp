@@ -1,6 +1,6 @@
 #pragma once
 
-#include <visfeat/error.h>
+#include <visfeat/core/common/error.h>
 #include <visfeat/voxel_band_from_cloud.h>
 
 #include <pcl/common/point_tests.h>

@@ -1,0 +1,72 @@
+#pragma once
+
+#include <visfeat/core/band/voxel_band.h>
+#include <visfeat/core/visibility/free_space.h>
+
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+namespace visfeat {
+
+/** \brief Called now and then with the cells done so far and the total: every few
+ * hundred cells from the calling thread or OpenMP's thread 0, never concurrently, and
+ * once more at the end with done == total. Keep it cheap. */
+using ProgressCallback = std::function<void(std::size_t done, std::size_t total)>;
+
+/** \brief The trimmed visibility map: a visibility radius for every mixed cell.
+ *
+ * Ring 1 of a cell c is its mixed 6-neighbours; ring k the mixed cells 6-adjacent to
+ * ring k-1 not seen before (BFS layers through the band). The radius of c is the number
+ * of successive rings whose cells c all sees (FreeSpace::sees), stopping at the first
+ * ring with one hidden cell, and capped at max_radius. A ring left empty because the
+ * BFS ran out of cells counts as visible.
+ *
+ * Cells are independent, so the work is spread over threads cell by cell and the
+ * result is the same for any thread count.
+ */
+class VisibilityMap
+{
+public:
+  struct Parameters
+  {
+    /** \brief Cap of the radius (rings); the components threshold min_radius is the
+     * natural choice. Range [1, kMaxRadius], default 11. */
+    int max_radius = 11;
+    /** \brief Opacity delta in cell edges: a pair still sees each other while the
+     * blocked stretches add up to less than this. 0 (default) = exact visibility;
+     * the paper uses 3 for noisy scans. Range [0, kMaxOpacity]. */
+    double opacity = 0.0;
+    /** \brief Threads; 0 (default) = all available (OpenMP's default). */
+    int threads = 0;
+  };
+
+  static constexpr int kMaxRadius = 64;
+  static constexpr double kMaxOpacity = 64.0;
+  static constexpr int kMaxThreads = 1024;
+
+  /** \brief Throws visfeat::Error naming the first parameter out of range. */
+  static void validate(const Parameters& parameters);
+
+  /** \brief Compute the map of a band. \throws visfeat::Error on bad parameters. */
+  static VisibilityMap compute(const VoxelBand& band,
+                               const FreeSpace& free_space,
+                               const Parameters& parameters,
+                               const ProgressCallback& progress = {});
+
+  const std::vector<std::uint8_t>& radii() const { return radii_; }
+
+  std::uint8_t radius(CellId id) const { return radii_[static_cast<std::size_t>(id)]; }
+
+  const Parameters& parameters() const { return parameters_; }
+
+  /** \brief Pair tests performed (a cost figure for benchmarks). */
+  std::uint64_t testsPerformed() const { return tests_; }
+
+private:
+  Parameters parameters_;
+  std::vector<std::uint8_t> radii_;
+  std::uint64_t tests_ = 0;
+};
+
+} // namespace visfeat

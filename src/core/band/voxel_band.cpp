@@ -1,0 +1,272 @@
+#include <visfeat/core/band/voxel_band.h>
+#include <visfeat/core/common/error.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <numeric>
+#include <sstream>
+
+namespace visfeat {
+namespace {
+
+const std::array<CellCoord, 6> kFaceSteps = {CellCoord(-1, 0, 0), CellCoord(1, 0, 0),
+                                             CellCoord(0, -1, 0), CellCoord(0, 1, 0),
+                                             CellCoord(0, 0, -1), CellCoord(0, 0, 1)};
+
+/** The 26-neighbour offsets that are not face steps: 12 edge and 8 corner steps. */
+std::vector<CellCoord>
+diagonalSteps()
+{
+  std::vector<CellCoord> steps;
+  for (int z = -1; z <= 1; ++z)
+    for (int y = -1; y <= 1; ++y)
+      for (int x = -1; x <= 1; ++x)
+        if (std::abs(x) + std::abs(y) + std::abs(z) >= 2)
+          steps.emplace_back(x, y, z);
+  return steps;
+}
+
+/** Repairs the 6-connectivity of a growing set of cells. */
+class BandRepair
+{
+public:
+  BandRepair(const GridSpec& grid,
+             std::vector<CellCoord>& coords,
+             std::vector<std::uint32_t>& counts,
+             std::vector<Eigen::Vector3d>& sums)
+      : coords_(coords)
+      , counts_(counts)
+      , sums_(sums)
+      , index_(grid.dims)
+  {
+    for (std::size_t i = 0; i < coords_.size(); ++i)
+      index_.insert(coords_[i], static_cast<CellId>(i));
+  }
+
+  std::size_t run()
+  {
+    const std::vector<CellCoord> steps = diagonalSteps();
+    std::size_t added = 0;
+    // Cells added on the way are appended and visited too, so they get repaired as
+    // well; every pair is seen from both ends, the first visit decides.
+    for (std::size_t i = 0; i < coords_.size(); ++i)
+      for (const CellCoord& step : steps) {
+        const CellCoord other = coords_[i] + step;
+        const CellId j = index_.find(other);
+        if (j != kNoCell)
+          added += connect(static_cast<CellId>(i), j);
+      }
+    return added;
+  }
+
+private:
+  bool mixed(const CellCoord& c) const { return index_.find(c) != kNoCell; }
+
+  void add(const CellCoord& c)
+  {
+    index_.insert(c, static_cast<CellId>(coords_.size()));
+    coords_.push_back(c);
+    counts_.push_back(0);
+    sums_.push_back(Eigen::Vector3d::Zero());
+  }
+
+  /** Centroid of the points of both cells (cell units), centres for cells without. */
+  Eigen::Vector3d pairCentroid(CellId a, CellId b) const
+  {
+    const std::uint64_t n = std::uint64_t{counts_[a]} + counts_[b];
+    if (n == 0)
+      return 0.5 * (coords_[a].cast<double>() + coords_[b].cast<double>()) +
+             Eigen::Vector3d::Constant(0.5);
+    return (sums_[a] + sums_[b]) / static_cast<double>(n);
+  }
+
+  double distance(const CellCoord& c, const Eigen::Vector3d& p) const
+  {
+    return (c.cast<double>() + Eigen::Vector3d::Constant(0.5) - p).squaredNorm();
+  }
+
+  /** Adds the fewest cells of the 2x2x2 box of a and b so they are 6-connected in it.
+   */
+  std::size_t connect(CellId a, CellId b)
+  {
+    const CellCoord ca = coords_[a];
+    const CellCoord step = coords_[b] - ca;
+    std::array<CellCoord, 3> units;
+    int axes = 0;
+    for (int k = 0; k < 3; ++k)
+      if (step[k] != 0)
+        units[axes++] = CellCoord::Unit(k) * step[k];
+
+    if (axes == 2) {
+      const CellCoord p = ca + units[0], q = ca + units[1];
+      if (mixed(p) || mixed(q))
+        return 0;
+      const Eigen::Vector3d centroid = pairCentroid(a, b);
+      add(distance(q, centroid) < distance(p, centroid) ? q : p);
+      return 1;
+    }
+
+    // Corner pair: monotone paths a -> a+u -> a+u+v -> b over the 6 axis orders (any
+    // path inside the box implies a monotone one).
+    static const int kOrders[6][2] = {{0, 1}, {0, 2}, {1, 0}, {1, 2}, {2, 0}, {2, 1}};
+    std::array<bool, 3> first_mixed, second_mixed; // a + u_i, b - u_i
+    for (int i = 0; i < 3; ++i) {
+      first_mixed[i] = mixed(ca + units[i]);
+      second_mixed[i] = mixed(coords_[b] - units[i]);
+    }
+    for (const auto& order :
+         kOrders) // second cell of order (i, j) is b - u_k, k the third axis
+      if (first_mixed[order[0]] && second_mixed[3 - order[0] - order[1]])
+        return 0;
+
+    const Eigen::Vector3d centroid = pairCentroid(a, b);
+    int best_missing = 3;
+    double best_cost = 0.0;
+    std::array<CellCoord, 2> best_path;
+    for (const auto& order : kOrders) {
+      const CellCoord first = ca + units[order[0]];
+      const CellCoord second = first + units[order[1]];
+      const bool has_first = first_mixed[order[0]];
+      const bool has_second = second_mixed[3 - order[0] - order[1]];
+      const int missing = int(!has_first) + int(!has_second);
+      const double cost = (has_first ? 0.0 : distance(first, centroid)) +
+                          (has_second ? 0.0 : distance(second, centroid));
+      if (missing < best_missing || (missing == best_missing && cost < best_cost)) {
+        best_missing = missing;
+        best_cost = cost;
+        best_path = {first, second};
+      }
+    }
+    std::size_t added = 0;
+    for (const CellCoord& c : best_path)
+      if (!mixed(c)) {
+        add(c);
+        ++added;
+      }
+    return added;
+  }
+
+  std::vector<CellCoord>& coords_;
+  std::vector<std::uint32_t>& counts_;
+  std::vector<Eigen::Vector3d>& sums_;
+  CellIndex index_;
+};
+
+} // namespace
+
+VoxelBand
+VoxelBand::build(const GridSpec& grid,
+                 std::vector<OccupiedCell> occupied,
+                 const std::vector<std::int32_t>& point_occupied,
+                 const Options& options)
+{
+  if (occupied.empty())
+    throw Error("the band is empty: no cell holds a finite point");
+  if ((grid.dims.array() <= 0).any())
+    throw Error("the grid has no cells");
+  for (const OccupiedCell& cell : occupied)
+    if (!grid.contains(cell.coord)) {
+      std::ostringstream msg;
+      msg << "cell (" << cell.coord.transpose() << ") lies outside the grid of "
+          << grid.dims.transpose() << " cells";
+      throw Error(msg.str());
+    }
+
+  // Number the occupied cells by linear key; remember where each input entry went.
+  std::vector<std::size_t> order(occupied.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return grid.linearKey(occupied[a].coord) < grid.linearKey(occupied[b].coord);
+  });
+  std::vector<CellCoord> coords;
+  std::vector<std::uint32_t> counts;
+  std::vector<Eigen::Vector3d> sums; // sum of point positions, cell units
+  coords.reserve(occupied.size());
+  for (std::size_t r = 0; r < order.size(); ++r) {
+    const OccupiedCell& cell = occupied[order[r]];
+    if (r > 0 && coords.back() == cell.coord)
+      throw Error("the occupied cells hold a duplicate");
+    coords.push_back(cell.coord);
+    counts.push_back(cell.point_count);
+    sums.push_back(cell.offset_sum.cast<double>() / OccupiedCell::kOffsetScale +
+                   static_cast<double>(cell.point_count) * cell.coord.cast<double>());
+  }
+
+  VoxelBand band;
+  band.grid_ = grid;
+  if (options.repair)
+    band.repair_cells_ = BandRepair(grid, coords, counts, sums).run();
+  band.finalize(std::move(coords), std::move(counts));
+
+  band.point_cell_.assign(point_occupied.size(), kNoCell);
+  for (std::size_t p = 0; p < point_occupied.size(); ++p) {
+    const std::int32_t entry = point_occupied[p];
+    if (entry < 0)
+      continue;
+    if (static_cast<std::size_t>(entry) >= occupied.size())
+      throw Error("a point refers to an occupied cell that does not exist");
+    band.point_cell_[p] = band.find(occupied[static_cast<std::size_t>(entry)].coord);
+  }
+  return band;
+}
+
+VoxelBand
+VoxelBand::fromCells(const GridSpec& grid,
+                     const std::vector<CellCoord>& cells,
+                     const Options& options)
+{
+  std::vector<OccupiedCell> occupied(cells.size());
+  const std::int64_t half = static_cast<std::int64_t>(OccupiedCell::kOffsetScale / 2);
+  for (std::size_t i = 0; i < cells.size(); ++i) {
+    occupied[i].coord = cells[i];
+    occupied[i].point_count = 1;
+    occupied[i].offset_sum.setConstant(half);
+  }
+  std::vector<std::int32_t> point_occupied(cells.size());
+  std::iota(point_occupied.begin(), point_occupied.end(), 0);
+  return build(grid, std::move(occupied), point_occupied, options);
+}
+
+void
+VoxelBand::finalize(std::vector<CellCoord> coords, std::vector<std::uint32_t> counts)
+{
+  std::vector<std::size_t> order(coords.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return grid_.linearKey(coords[a]) < grid_.linearKey(coords[b]);
+  });
+  coords_.resize(coords.size());
+  point_counts_.resize(coords.size());
+  index_ = CellIndex(grid_.dims);
+  for (std::size_t r = 0; r < order.size(); ++r) {
+    coords_[r] = coords[order[r]];
+    point_counts_[r] = counts[order[r]];
+    index_.insert(coords_[r], static_cast<CellId>(r));
+  }
+  neighbours_.resize(coords_.size());
+  for (std::size_t i = 0; i < coords_.size(); ++i)
+    for (std::size_t s = 0; s < kFaceSteps.size(); ++s)
+      neighbours_[i][s] = index_.find(coords_[i] + kFaceSteps[s]);
+}
+
+std::uint64_t
+VoxelBand::memoryBytes() const
+{
+  return coords_.capacity() * sizeof(CellCoord) +
+         point_counts_.capacity() * sizeof(std::uint32_t) +
+         neighbours_.capacity() * sizeof(Neighbours) +
+         point_cell_.capacity() * sizeof(CellId) + index_.memoryBytes();
+}
+
+std::uint64_t
+VoxelBand::estimateBytes(const GridSpec& grid, std::size_t cells, std::size_t points)
+{
+  // coords, counts, neighbours, repair sums; index bricks (~1 per 8 cells on a surface)
+  const std::uint64_t per_cell = sizeof(CellCoord) + sizeof(std::uint32_t) +
+                                 sizeof(Neighbours) + sizeof(Eigen::Vector3d) +
+                                 512 * sizeof(CellId) / 8;
+  return CellIndex::tableBytes(grid.dims) * 2 + per_cell * cells +
+         sizeof(CellId) * points;
+}
+
+} // namespace visfeat

@@ -1,0 +1,631 @@
+#include <visfeat/core/band/band_dilation.h>
+#include <visfeat/core/common/error.h>
+#include <visfeat/core/graph/topology_graph.h>
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <locale>
+#include <ostream>
+#include <sstream>
+
+namespace visfeat {
+namespace {
+
+bool
+validClass(FeatureClass cls)
+{
+  return static_cast<std::uint8_t>(cls) <=
+         static_cast<std::uint8_t>(FeatureClass::kFace);
+}
+
+/** Whether the BFS from a region of class from should join a region of class to. */
+bool
+wanted(FeatureClass from, FeatureClass to)
+{
+  if (from == FeatureClass::kVertex)
+    return to == FeatureClass::kEdge || to == FeatureClass::kFace;
+  if (from == FeatureClass::kEdge)
+    return to == FeatureClass::kFace;
+  return false;
+}
+
+// --- JSON helpers ------------------------------------------------------------
+
+void
+writeJsonString(std::ostream& out, const std::string& s)
+{
+  static const char* const kHex = "0123456789abcdef";
+  out << '"';
+  for (const char ch : s) {
+    const unsigned char c = static_cast<unsigned char>(ch);
+    switch (c) {
+    case '"':
+      out << "\\\"";
+      break;
+    case '\\':
+      out << "\\\\";
+      break;
+    case '\b':
+      out << "\\b";
+      break;
+    case '\f':
+      out << "\\f";
+      break;
+    case '\n':
+      out << "\\n";
+      break;
+    case '\r':
+      out << "\\r";
+      break;
+    case '\t':
+      out << "\\t";
+      break;
+    default:
+      if (c < 0x20 || c == 0x7f)
+        out << "\\u00" << kHex[c >> 4] << kHex[c & 0xf];
+      else
+        out << ch;
+    }
+  }
+  out << '"';
+}
+
+/** Shortest representation that reads back to the same double (locale-free); null
+ * for NaN and infinities. */
+void
+writeJsonDouble(std::ostream& out, double v)
+{
+  if (!std::isfinite(v)) {
+    out << "null";
+    return;
+  }
+  char buf[64];
+  const std::to_chars_result r = std::to_chars(buf, buf + sizeof(buf), v);
+  if (r.ec != std::errc()) { // cannot happen with 64 bytes; keep a safe fallback
+    std::ostringstream s;
+    s.imbue(std::locale::classic());
+    s.precision(std::numeric_limits<double>::max_digits10);
+    s << v;
+    out << s.str();
+    return;
+  }
+  out.write(buf, r.ptr - buf);
+}
+
+void
+writeJsonVector(std::ostream& out, const Eigen::Vector3d& v)
+{
+  out << '[';
+  for (int i = 0; i < 3; ++i) {
+    if (i > 0)
+      out << ", ";
+    writeJsonDouble(out, v[i]);
+  }
+  out << ']';
+}
+
+/** JSON number grammar: -?(0|[1-9][0-9]*)(.[0-9]+)?([eE][+-]?[0-9]+)? */
+bool
+isJsonNumber(const std::string& s)
+{
+  std::size_t i = 0;
+  const std::size_t n = s.size();
+  const auto digit = [&](std::size_t k) {
+    return k < n && std::isdigit(static_cast<unsigned char>(s[k])) != 0;
+  };
+  if (i < n && s[i] == '-')
+    ++i;
+  if (!digit(i))
+    return false;
+  if (s[i] == '0')
+    ++i;
+  else
+    while (digit(i))
+      ++i;
+  if (i < n && s[i] == '.') {
+    ++i;
+    if (!digit(i))
+      return false;
+    while (digit(i))
+      ++i;
+  }
+  if (i < n && (s[i] == 'e' || s[i] == 'E')) {
+    ++i;
+    if (i < n && (s[i] == '+' || s[i] == '-'))
+      ++i;
+    if (!digit(i))
+      return false;
+    while (digit(i))
+      ++i;
+  }
+  return i == n;
+}
+
+void
+writeJsonValue(std::ostream& out, const std::string& value)
+{
+  if (value == "true" || value == "false" || isJsonNumber(value))
+    out << value;
+  else
+    writeJsonString(out, value);
+}
+
+char
+classLetter(FeatureClass cls)
+{
+  switch (cls) {
+  case FeatureClass::kVertex:
+    return 'V';
+  case FeatureClass::kEdge:
+    return 'E';
+  case FeatureClass::kFace:
+    return 'F';
+  default:
+    return 'N';
+  }
+}
+
+std::string
+lowerExtension(const std::string& path)
+{
+  const std::size_t slash = path.find_last_of("/\\");
+  const std::size_t dot = path.find_last_of('.');
+  if (dot == std::string::npos || (slash != std::string::npos && dot < slash))
+    return {};
+  std::string ext = path.substr(dot);
+  for (char& c : ext)
+    c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return ext;
+}
+
+} // namespace
+
+// --- Building ----------------------------------------------------------------
+
+void
+TopologyGraph::validate(const TopologyGraphParameters& p)
+{
+  if (p.dilation_radius < 0 ||
+      p.dilation_radius > TopologyGraphParameters::kMaxDilationRadius) {
+    std::ostringstream msg;
+    msg << "dilation_radius " << p.dilation_radius << " is out of range [0, "
+        << TopologyGraphParameters::kMaxDilationRadius << "] (cells)";
+    throw Error(msg.str());
+  }
+  if (!(p.min_face_contact >= 0.0 && p.min_face_contact <= 1.0)) {
+    std::ostringstream msg;
+    msg << "min_face_contact " << p.min_face_contact << " is out of range [0, 1]";
+    throw Error(msg.str());
+  }
+}
+
+TopologyGraph
+TopologyGraph::build(const VoxelBand& band,
+                     const std::vector<std::uint32_t>& cell_labels,
+                     const std::vector<FeatureClass>& region_classes,
+                     const TopologyGraphParameters& parameters)
+{
+  validate(parameters);
+  const std::size_t n_cells = band.size();
+  const std::size_t n_regions = region_classes.size();
+  if (cell_labels.size() != n_cells) {
+    std::ostringstream msg;
+    msg << "cell_labels has " << cell_labels.size() << " entries, the band " << n_cells
+        << " cells";
+    throw Error(msg.str());
+  }
+  if (n_regions > std::numeric_limits<std::uint32_t>::max() - 1u)
+    throw Error("too many regions for 32-bit labels");
+  for (std::size_t r = 0; r < n_regions; ++r) {
+    if (!validClass(region_classes[r])) {
+      std::ostringstream msg;
+      msg << "region " << r + 1 << " has an invalid feature class "
+          << static_cast<int>(static_cast<std::uint8_t>(region_classes[r]));
+      throw Error(msg.str());
+    }
+  }
+
+  // Cells of each region, ascending (CSR: offsets[label - 1] .. offsets[label]).
+  std::vector<std::size_t> offsets(n_regions + 1, 0);
+  for (std::size_t c = 0; c < n_cells; ++c) {
+    const std::uint32_t label = cell_labels[c];
+    if (label > n_regions) {
+      std::ostringstream msg;
+      msg << "cell " << c << " has label " << label << ", above the " << n_regions
+          << " regions";
+      throw Error(msg.str());
+    }
+    if (label != 0)
+      ++offsets[label];
+  }
+  for (std::size_t r = 0; r < n_regions; ++r)
+    offsets[r + 1] += offsets[r];
+  std::vector<CellId> region_cells(offsets[n_regions]);
+  {
+    std::vector<std::size_t> fill(offsets.begin(), offsets.end() - 1);
+    for (std::size_t c = 0; c < n_cells; ++c) {
+      const std::uint32_t label = cell_labels[c];
+      if (label != 0)
+        region_cells[fill[label - 1]++] = static_cast<CellId>(c);
+    }
+  }
+
+  TopologyGraph result;
+  result.parameters_ = parameters;
+  result.graph_ = Graph(n_regions);
+  const GridSpec& grid = band.grid();
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+
+  // Nodes: cells, points, cell-based geometry.
+  for (std::size_t r = 0; r < n_regions; ++r) {
+    GraphNode& node = result.graph_[static_cast<Graph::vertex_descriptor>(r)];
+    node.id = static_cast<std::uint32_t>(r + 1);
+    node.feature_class = region_classes[r];
+    node.cells = static_cast<std::uint32_t>(offsets[r + 1] - offsets[r]);
+    if (node.cells == 0) {
+      node.points = 0;
+      node.centroid.setConstant(nan);
+      node.min.setConstant(nan);
+      node.max.setConstant(nan);
+      continue;
+    }
+    Eigen::Vector3d weighted = Eigen::Vector3d::Zero();
+    Eigen::Vector3d plain = Eigen::Vector3d::Zero();
+    std::uint64_t points = 0;
+    CellCoord lo = band.coord(region_cells[offsets[r]]);
+    CellCoord hi = lo;
+    for (std::size_t k = offsets[r]; k < offsets[r + 1]; ++k) {
+      const CellId c = region_cells[k];
+      const CellCoord& coord = band.coord(c);
+      const Eigen::Vector3d centre = grid.cellCenter(coord);
+      const std::uint32_t count = band.pointCount(c);
+      points += count;
+      weighted += static_cast<double>(count) * centre;
+      plain += centre;
+      lo = lo.cwiseMin(coord);
+      hi = hi.cwiseMax(coord);
+    }
+    node.points = points;
+    node.centroid = points > 0
+                      ? Eigen::Vector3d(weighted / static_cast<double>(points))
+                      : Eigen::Vector3d(plain / static_cast<double>(node.cells));
+    node.min = grid.origin + grid.cell_size * lo.cast<double>();
+    node.max = grid.origin + grid.cell_size * (hi.array() + 1).matrix().cast<double>();
+  }
+
+  // Arcs: the geodesic dilation (BandDilation) of every vertex and edge region by
+  // dilation_radius, and the labels of the cells it reaches.
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
+  const int radius = parameters.dilation_radius;
+  if (radius > 0 && n_cells > 0) {
+    BandDilation dilation(band);
+    std::vector<CellId> cells;
+    std::vector<std::uint32_t> found;
+    for (std::size_t r = 0; r < n_regions; ++r) {
+      const FeatureClass from = region_classes[r];
+      if (from != FeatureClass::kVertex && from != FeatureClass::kEdge)
+        continue;
+      if (offsets[r] == offsets[r + 1])
+        continue;
+      const std::uint32_t label = static_cast<std::uint32_t>(r + 1);
+      cells.assign(region_cells.begin() + static_cast<std::ptrdiff_t>(offsets[r]),
+                   region_cells.begin() + static_cast<std::ptrdiff_t>(offsets[r + 1]));
+      found.clear();
+      dilation.run(cells, static_cast<std::uint32_t>(radius), [&](CellId c) {
+        const std::uint32_t other = cell_labels[static_cast<std::size_t>(c)];
+        if (other != 0 && other != label && wanted(from, region_classes[other - 1]))
+          found.push_back(other);
+      });
+      // Reached cells per region; an edge keeps a face only if it reaches a fair share
+      // of its strongest face (the corner's third face touches an edge at its ends).
+      std::sort(found.begin(), found.end());
+      std::vector<std::pair<std::uint32_t, std::size_t>> counts;
+      for (const std::uint32_t other : found)
+        if (counts.empty() || counts.back().first != other)
+          counts.emplace_back(other, 1);
+        else
+          ++counts.back().second;
+      std::size_t strongest_face = 0;
+      for (const auto& [other, count] : counts)
+        if (region_classes[other - 1] == FeatureClass::kFace)
+          strongest_face = std::max(strongest_face, count);
+      for (const auto& [other, count] : counts) {
+        const bool weak_face =
+          from == FeatureClass::kEdge &&
+          region_classes[other - 1] == FeatureClass::kFace &&
+          static_cast<double>(count) <
+            parameters.min_face_contact * static_cast<double>(strongest_face);
+        if (!weak_face)
+          pairs.emplace_back(std::min(label, other), std::max(label, other));
+      }
+    }
+  }
+  // A corner lies on every face of its edges, even where its (small) region does not
+  // reach that face's cells: vertex-face arcs also follow vertex-edge-face paths.
+  if (parameters.vertex_faces_from_edges) {
+    std::vector<std::vector<std::uint32_t>> edges_of_vertex(n_regions + 1),
+      faces_of_edge(n_regions + 1);
+    for (const auto& [a, b] : pairs) {
+      const FeatureClass ca = region_classes[a - 1], cb = region_classes[b - 1];
+      if (ca == FeatureClass::kVertex && cb == FeatureClass::kEdge)
+        edges_of_vertex[a].push_back(b);
+      else if (cb == FeatureClass::kVertex && ca == FeatureClass::kEdge)
+        edges_of_vertex[b].push_back(a);
+      else if (ca == FeatureClass::kEdge && cb == FeatureClass::kFace)
+        faces_of_edge[a].push_back(b);
+      else if (cb == FeatureClass::kEdge && ca == FeatureClass::kFace)
+        faces_of_edge[b].push_back(a);
+    }
+    for (std::uint32_t v = 1; v <= n_regions; ++v)
+      for (const std::uint32_t e : edges_of_vertex[v])
+        for (const std::uint32_t f : faces_of_edge[e])
+          pairs.emplace_back(std::min(v, f), std::max(v, f));
+  }
+  std::sort(pairs.begin(), pairs.end());
+  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+  for (const auto& p : pairs)
+    boost::add_edge(p.first - 1, p.second - 1, result.graph_);
+  return result;
+}
+
+void
+TopologyGraph::setPointGeometry(std::uint32_t id,
+                                std::uint64_t points,
+                                const Eigen::Vector3d& centroid,
+                                const Eigen::Vector3d& min,
+                                const Eigen::Vector3d& max)
+{
+  checkedNode(id, "setPointGeometry");
+  GraphNode& node = graph_[id - 1];
+  node.points = points;
+  node.centroid = centroid;
+  node.min = min;
+  node.max = max;
+}
+
+// --- Queries -----------------------------------------------------------------
+
+const GraphNode&
+TopologyGraph::checkedNode(std::uint32_t id, const char* what) const
+{
+  if (!contains(id)) {
+    std::ostringstream msg;
+    msg << what << ": no region " << id << " in the topology graph (ids 1.." << size()
+        << ")";
+    throw Error(msg.str());
+  }
+  return graph_[id - 1];
+}
+
+const GraphNode&
+TopologyGraph::node(std::uint32_t id) const
+{
+  return checkedNode(id, "node");
+}
+
+std::size_t
+TopologyGraph::classCount(FeatureClass cls) const
+{
+  std::size_t n = 0;
+  for (std::size_t v = 0; v < size(); ++v)
+    n += graph_[v].feature_class == cls ? 1 : 0;
+  return n;
+}
+
+std::vector<std::uint32_t>
+TopologyGraph::neighbours(std::uint32_t id) const
+{
+  checkedNode(id, "neighbours");
+  std::vector<std::uint32_t> ids;
+  const auto range = boost::adjacent_vertices(id - 1, graph_);
+  for (auto it = range.first; it != range.second; ++it)
+    ids.push_back(static_cast<std::uint32_t>(*it + 1));
+  std::sort(ids.begin(), ids.end());
+  return ids;
+}
+
+std::vector<std::uint32_t>
+TopologyGraph::neighbours(std::uint32_t id, FeatureClass cls) const
+{
+  std::vector<std::uint32_t> ids = neighbours(id);
+  ids.erase(
+    std::remove_if(ids.begin(), ids.end(),
+                   [&](std::uint32_t o) { return graph_[o - 1].feature_class != cls; }),
+    ids.end());
+  return ids;
+}
+
+bool
+TopologyGraph::adjacent(std::uint32_t a, std::uint32_t b) const
+{
+  checkedNode(a, "adjacent");
+  checkedNode(b, "adjacent");
+  return boost::edge(a - 1, b - 1, graph_).second;
+}
+
+namespace {
+
+void
+requireClass(const GraphNode& node, FeatureClass cls, const char* what)
+{
+  if (node.feature_class != cls) {
+    std::ostringstream msg;
+    msg << what << ": region " << node.id << " is a "
+        << TopologyGraph::className(node.feature_class) << ", not a "
+        << TopologyGraph::className(cls);
+    throw Error(msg.str());
+  }
+}
+
+} // namespace
+
+std::vector<std::uint32_t>
+TopologyGraph::edgesOfFace(std::uint32_t id) const
+{
+  requireClass(checkedNode(id, "edgesOfFace"), FeatureClass::kFace, "edgesOfFace");
+  return neighbours(id, FeatureClass::kEdge);
+}
+
+std::vector<std::uint32_t>
+TopologyGraph::verticesOfEdge(std::uint32_t id) const
+{
+  requireClass(checkedNode(id, "verticesOfEdge"), FeatureClass::kEdge,
+               "verticesOfEdge");
+  return neighbours(id, FeatureClass::kVertex);
+}
+
+std::vector<std::uint32_t>
+TopologyGraph::facesOfEdge(std::uint32_t id) const
+{
+  requireClass(checkedNode(id, "facesOfEdge"), FeatureClass::kEdge, "facesOfEdge");
+  return neighbours(id, FeatureClass::kFace);
+}
+
+std::vector<std::pair<std::uint32_t, std::uint32_t>>
+TopologyGraph::arcs() const
+{
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> result;
+  result.reserve(arcCount());
+  const auto range = boost::edges(graph_);
+  for (auto it = range.first; it != range.second; ++it) {
+    const auto a = static_cast<std::uint32_t>(boost::source(*it, graph_) + 1);
+    const auto b = static_cast<std::uint32_t>(boost::target(*it, graph_) + 1);
+    result.emplace_back(std::min(a, b), std::max(a, b));
+  }
+  std::sort(result.begin(), result.end());
+  return result;
+}
+
+const char*
+TopologyGraph::className(FeatureClass cls)
+{
+  switch (cls) {
+  case FeatureClass::kVertex:
+    return "vertex";
+  case FeatureClass::kEdge:
+    return "edge";
+  case FeatureClass::kFace:
+    return "face";
+  default:
+    return "none";
+  }
+}
+
+// --- Export ------------------------------------------------------------------
+
+void
+TopologyGraph::writeDot(std::ostream& stream) const
+{
+  // Built in a classic-locale buffer: no digit grouping whatever the stream's locale.
+  std::ostringstream out;
+  out.imbue(std::locale::classic());
+  out << "graph visfeat_topology {\n";
+  out << "  node [style=filled, fontname=\"Helvetica\"];\n";
+  for (std::size_t v = 0; v < size(); ++v) {
+    const GraphNode& n = graph_[v];
+    const char* shape = "diamond";
+    const char* colour = "lightgrey";
+    switch (n.feature_class) {
+    case FeatureClass::kVertex:
+      shape = "circle";
+      colour = "red";
+      break;
+    case FeatureClass::kEdge:
+      shape = "box";
+      colour = "orange";
+      break;
+    case FeatureClass::kFace:
+      shape = "ellipse";
+      colour = "yellow";
+      break;
+    default:
+      break;
+    }
+    out << "  " << n.id << " [label=\"" << classLetter(n.feature_class) << n.id
+        << "\", shape=" << shape << ", fillcolor=" << colour << ", feature_class=\""
+        << className(n.feature_class) << "\", cells=" << n.cells
+        << ", points=" << n.points << "];\n";
+  }
+  for (const auto& arc : arcs())
+    out << "  " << arc.first << " -- " << arc.second << ";\n";
+  out << "}\n";
+  stream << out.str();
+}
+
+void
+TopologyGraph::writeJson(std::ostream& stream, const GraphMetadata& meta) const
+{
+  std::ostringstream out;
+  out.imbue(std::locale::classic());
+  out << "{\n  \"format\": \"visfeat-topology-graph\",\n  \"version\": 1,\n";
+  out << "  \"source\": ";
+  writeJsonString(out, meta.source);
+  out << ",\n  \"grid\": {\"origin\": ";
+  writeJsonVector(out, meta.grid.origin);
+  out << ", \"cell_size\": ";
+  writeJsonDouble(out, meta.grid.cell_size);
+  out << ", \"dims\": [" << meta.grid.dims.x() << ", " << meta.grid.dims.y() << ", "
+      << meta.grid.dims.z() << "]},\n";
+  out << "  \"parameters\": {";
+  for (std::size_t i = 0; i < meta.parameters.size(); ++i) {
+    out << (i > 0 ? ", " : "");
+    writeJsonString(out, meta.parameters[i].first);
+    out << ": ";
+    writeJsonValue(out, meta.parameters[i].second);
+  }
+  out << "},\n";
+  const std::vector<std::pair<std::uint32_t, std::uint32_t>> all_arcs = arcs();
+  out << "  \"counts\": {\"vertices\": " << classCount(FeatureClass::kVertex)
+      << ", \"edges\": " << classCount(FeatureClass::kEdge)
+      << ", \"faces\": " << classCount(FeatureClass::kFace)
+      << ", \"arcs\": " << all_arcs.size() << "},\n";
+  out << "  \"nodes\": [";
+  for (std::size_t v = 0; v < size(); ++v) {
+    const GraphNode& n = graph_[v];
+    out << (v > 0 ? ",\n    " : "\n    ");
+    out << "{\"id\": " << n.id << ", \"class\": \"" << className(n.feature_class)
+        << "\", \"cells\": " << n.cells << ", \"points\": " << n.points
+        << ", \"centroid\": ";
+    writeJsonVector(out, n.centroid);
+    out << ", \"min\": ";
+    writeJsonVector(out, n.min);
+    out << ", \"max\": ";
+    writeJsonVector(out, n.max);
+    out << '}';
+  }
+  out << (size() > 0 ? "\n  ],\n" : "],\n");
+  out << "  \"arcs\": [";
+  for (std::size_t i = 0; i < all_arcs.size(); ++i)
+    out << (i > 0 ? ", " : "") << '[' << all_arcs[i].first << ", " << all_arcs[i].second
+        << ']';
+  out << "]\n}\n";
+  stream << out.str();
+}
+
+bool
+TopologyGraph::writeFile(const std::string& path, const GraphMetadata& meta) const
+{
+  const std::string ext = lowerExtension(path);
+  const bool dot = ext == ".dot" || ext == ".gv";
+  if (!dot && ext != ".json") {
+    throw Error("cannot write the topology graph to '" + path +
+                "': use the extension .dot, .gv (GraphViz) or .json");
+  }
+  std::ofstream out(path, std::ios::out | std::ios::trunc);
+  if (!out)
+    throw Error("cannot open '" + path + "' for writing");
+  if (dot)
+    writeDot(out);
+  else
+    writeJson(out, meta);
+  out.flush();
+  if (!out)
+    throw Error("failed writing the topology graph to '" + path + "'");
+  return true;
+}
+
+} // namespace visfeat

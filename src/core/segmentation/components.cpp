@@ -1,0 +1,105 @@
+#include <visfeat/core/common/error.h>
+#include <visfeat/core/segmentation/components.h>
+
+#include <sstream>
+
+namespace visfeat {
+
+void
+ComponentSet::validate(const ComponentParameters& p, int max_radius)
+{
+  std::ostringstream msg;
+  if (p.min_radius < 1 || p.min_radius > max_radius)
+    msg << "min_radius " << p.min_radius
+        << " is out of range [1, max_radius = " << max_radius
+        << "] (rings; raise max_radius to at least min_radius)";
+  else if (p.vertex_max_cells < 0 || p.vertex_max_cells > 100000)
+    msg << "vertex_max_cells " << p.vertex_max_cells
+        << " is out of range [0, 100000] (cells)";
+  else if (!(p.dimensionality >= 0.0 && p.dimensionality <= 6.0))
+    msg << "dimensionality " << p.dimensionality
+        << " is out of range [0, 6] (mean same-component 6-neighbours)";
+  else if (p.face_min_depth < 1 || p.face_min_depth > 1000)
+    msg << "face_min_depth " << p.face_min_depth
+        << " is out of range [1, 1000] (cells)";
+  if (!msg.str().empty())
+    throw Error(msg.str());
+}
+
+ComponentSet
+ComponentSet::extract(const VoxelBand& band,
+                      const VisibilityMap& map,
+                      const ComponentParameters& parameters,
+                      bool raw)
+{
+  validate(parameters, map.parameters().max_radius);
+  const std::size_t n = band.size();
+  ComponentSet set;
+  set.labels_.assign(n, 0);
+  std::vector<CellId> members;
+  std::vector<std::uint32_t> depth(n, 0);
+  std::vector<CellId> frontier;
+  for (std::size_t seed = 0; seed < n; ++seed) {
+    if (set.labels_[seed] != 0 || map.radii()[seed] < parameters.min_radius)
+      continue;
+    const auto label = static_cast<std::uint32_t>(set.components_.size() + 1);
+    members.assign(1, static_cast<CellId>(seed));
+    set.labels_[seed] = label;
+    for (std::size_t head = 0; head < members.size(); ++head)
+      for (const CellId nb : band.neighbours(members[head]))
+        if (nb != kNoCell && set.labels_[static_cast<std::size_t>(nb)] == 0 &&
+            map.radius(nb) >= parameters.min_radius) {
+          set.labels_[static_cast<std::size_t>(nb)] = label;
+          members.push_back(nb);
+        }
+
+    // Dimensionality (paper) and depth: BFS inwards from the border cells.
+    Component component;
+    component.cells = static_cast<std::uint32_t>(members.size());
+    std::uint64_t same = 0;
+    frontier.clear();
+    for (const CellId c : members) {
+      bool border = false;
+      for (const CellId nb : band.neighbours(c)) {
+        if (nb == kNoCell)
+          continue; // off the band (the band is a surface: most cells have such sides)
+        if (set.labels_[static_cast<std::size_t>(nb)] == label)
+          ++same;
+        else
+          border = true; // a band neighbour outside the component
+      }
+      depth[static_cast<std::size_t>(c)] = border ? 0 : std::uint32_t(-1);
+      if (border)
+        frontier.push_back(c);
+    }
+    for (std::size_t head = 0; head < frontier.size(); ++head) {
+      const std::uint32_t d = depth[static_cast<std::size_t>(frontier[head])] + 1;
+      for (const CellId nb : band.neighbours(frontier[head]))
+        if (nb != kNoCell && set.labels_[static_cast<std::size_t>(nb)] == label &&
+            depth[static_cast<std::size_t>(nb)] > d) {
+          depth[static_cast<std::size_t>(nb)] = d;
+          frontier.push_back(nb);
+          component.depth = std::max(component.depth, d);
+        }
+    }
+    if (frontier.empty()) // the component is a whole closed piece of the band
+      component.depth = component.cells;
+    component.mean_neighbours =
+      static_cast<float>(double(same) / double(members.size()));
+    if (members.size() <= static_cast<std::size_t>(parameters.vertex_max_cells))
+      component.feature_class = FeatureClass::kVertex;
+    else if (raw)
+      component.feature_class = component.mean_neighbours < parameters.dimensionality
+                                  ? FeatureClass::kEdge
+                                  : FeatureClass::kFace;
+    else
+      component.feature_class =
+        component.depth >= static_cast<std::uint32_t>(parameters.face_min_depth)
+          ? FeatureClass::kFace
+          : FeatureClass::kEdge;
+    set.components_.push_back(component);
+  }
+  return set;
+}
+
+} // namespace visfeat
