@@ -121,4 +121,21 @@ VisibilityMap::compute(const VoxelBand& band,
   return map;
 }
 
+VisibilityMap
+VisibilityMap::fromRadii(const Parameters& parameters, std::vector<std::uint8_t> radii)
+{
+  validate(parameters);
+  for (std::size_t c = 0; c < radii.size(); ++c)
+    if (radii[c] > parameters.max_radius) {
+      std::ostringstream msg;
+      msg << "radius " << int(radii[c]) << " of cell " << c << " is above max_radius "
+          << parameters.max_radius << " (rings)";
+      throw Error(msg.str());
+    }
+  VisibilityMap map;
+  map.parameters_ = parameters;
+  map.radii_ = std::move(radii);
+  return map;
+}
+
 } // namespace visfeat

@@ -58,15 +58,23 @@ struct Component
 class ComponentSet
 {
 public:
-  /** \throws visfeat::Error for parameters out of range. */
+  /** \brief The components of a band (n cells) from its map (one radius per cell).
+   * raw: classify by mean_neighbours (the paper's rule) instead of depth.
+   * \throws visfeat::Error for parameters out of range (validate(), against the
+   * map's max_radius). */
   static ComponentSet extract(const VoxelBand& band,
                               const VisibilityMap& map,
                               const ComponentParameters& parameters,
                               bool raw);
 
+  /** \brief Throws visfeat::Error naming the first parameter out of range, with its
+   * value, range and unit: min_radius in [1, max_radius] (rings), vertex_max_cells in
+   * [0, 100000] (cells), dimensionality in [0, 6], face_min_depth in [1, 1000]
+   * (cells). */
   static void validate(const ComponentParameters& parameters, int max_radius);
 
-  /** \brief Per cell, its component label (1-based), 0 for cells below min_radius. */
+  /** \brief Per cell (size n), its component label (1-based), 0 for cells below
+   * min_radius. */
   const std::vector<std::uint32_t>& cellLabels() const { return labels_; }
 
   /** \brief components()[label - 1]. */

@@ -86,15 +86,24 @@ struct Region
  *     two or more straight edges becomes the point nearest to their lines (the
  *     corner), and each edge is drawn from its core's end to it.
  * Labels are then renumbered 1.. in the order of each region's smallest cell id.
+ *
+ * Each step is a function of its own over a shared state, declared in order in
+ * src/core/segmentation/segmentation_steps.h (not installed); its tuned constants are
+ * named, with what they were measured on, in the step's source file.
  */
 class FeatureSegmentation
 {
 public:
-  /** \throws visfeat::Error for parameters out of range. */
+  /** \brief Segments the band (size n cells) with its map (one radius per cell).
+   * \throws visfeat::Error for parameters out of range (see validate()), checked
+   * against the map's max_radius. */
   static FeatureSegmentation compute(const VoxelBand& band,
                                      const VisibilityMap& map,
                                      const SegmentationParameters& parameters);
 
+  /** \brief Throws visfeat::Error naming the first parameter out of range, with its
+   * value, range and unit (e.g. "vertex_reach 0 is out of range [1, 1000] (cells)");
+   * the components' parameters first (ComponentSet::validate). */
   static void validate(const SegmentationParameters& parameters, int max_radius);
 
   /** \brief Per cell, its region label (1-based), 0 = none. */

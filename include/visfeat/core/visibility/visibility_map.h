@@ -54,6 +54,13 @@ public:
                                const Parameters& parameters,
                                const ProgressCallback& progress = {});
 
+  /** \brief A map with the given radii instead of computed ones: for small hand-made
+   * bands in tests, or radii computed elsewhere. radii[c] is the radius of band cell c
+   * (rings), one per cell of the band it is used with; testsPerformed() is 0.
+   * \throws visfeat::Error on bad parameters or a radius above max_radius. */
+  static VisibilityMap fromRadii(const Parameters& parameters,
+                                 std::vector<std::uint8_t> radii);
+
   const std::vector<std::uint8_t>& radii() const { return radii_; }
 
   std::uint8_t radius(CellId id) const { return radii_[static_cast<std::size_t>(id)]; }

@@ -1,0 +1,124 @@
+#include "segmentation_state.h"
+
+#include <visfeat/core/band/band_pieces.h>
+
+#include <limits>
+
+namespace visfeat {
+namespace segmentation {
+
+SegmentationState::SegmentationState(const VoxelBand& band_,
+                                     const VisibilityMap& map_,
+                                     const SegmentationParameters& parameters_,
+                                     const ComponentSet& cores_)
+    : band(band_)
+    , map(map_)
+    , parameters(parameters_)
+    , cores(cores_.components())
+    , core_of(cores_.cellLabels())
+    , seeds(core_of)
+    , cls(cores.size() + 1, FeatureClass::kNone)
+    , sets(cores.size())
+    , face_count(cores.size() + 1, 0)
+    , speck_into(cores.size() + 1, 0)
+    , speck(cores.size() + 1, 0)
+    , dilation(band_)
+{
+  // Outlier clusters: small band pieces get no label at all.
+  const std::vector<std::uint32_t> piece = bandPieceSizes(band);
+  for (std::size_t c = 0; c < seeds.size(); ++c)
+    if (piece[c] < static_cast<std::uint32_t>(parameters.min_piece_cells))
+      seeds[c] = 0;
+  for (std::size_t l = 0; l < cores.size(); ++l)
+    cls[l + 1] = cores[l].feature_class;
+}
+
+std::set<std::uint32_t>
+SegmentationState::coresWithin(std::uint32_t l,
+                               const std::vector<CellId>& cells,
+                               std::uint32_t steps)
+{
+  std::set<std::uint32_t> met;
+  dilation.run(cells, steps, [&](CellId c) {
+    const std::uint32_t other = core_of[static_cast<std::size_t>(c)];
+    if (other != 0 && other != l)
+      met.insert(other);
+  });
+  return met;
+}
+
+ThinningState::ThinningState(SegmentationState& state)
+    : band(state.band)
+    , map(state.map)
+    , parameters(state.parameters)
+    , core_of(state.core_of)
+    , speck(state.speck)
+    , labels(state.labels)
+    , cls(state.cls)
+    , skeleton(state.band.size(), 0)
+    , centres(state.band.size(),
+              Eigen::Vector3f::Constant(std::numeric_limits<float>::quiet_NaN()))
+    , tangents(state.band.size(), Eigen::Vector3f::Zero())
+{
+  for (std::size_t c = 0; c < band.size(); ++c) {
+    skeleton[c] = isFeature(labels[c]) && core_of[c] != 0 && !speck[core_of[c]];
+    if (skeleton[c])
+      (cls[labels[c]] == FeatureClass::kVertex ? vertex_cores : edge_cores)[labels[c]]
+        .push_back(static_cast<CellId>(c));
+  }
+  for (const auto& [edge, cells] : edge_cores)
+    core_line[edge] = fitCoreLine(band, cells);
+}
+
+void
+ThinningState::setCentre(CellId c,
+                         const Eigen::Vector3d& x,
+                         const Eigen::Vector3d& direction)
+{
+  centres[static_cast<std::size_t>(c)] =
+    (x + Eigen::Vector3d::Constant(0.5)).cast<float>();
+  tangents[static_cast<std::size_t>(c)] = direction.cast<float>();
+}
+
+double
+ThinningState::distance(CellId a, CellId b) const
+{
+  return (band.coord(a) - band.coord(b)).cast<double>().norm();
+}
+
+CellId
+ThinningState::farthestFrom(CellId from, const std::vector<CellId>& cells) const
+{
+  CellId best = from;
+  double best_distance = -1.0;
+  for (const CellId c : cells)
+    if (const double d = distance(from, c); d > best_distance) {
+      best_distance = d;
+      best = c;
+    }
+  return best;
+}
+
+CellId
+ThinningState::nearestCell(const Eigen::Vector3d& x) const
+{
+  const CellCoord at = x.array().round().cast<int>().matrix();
+  CellId best = kNoCell;
+  double best_distance = std::numeric_limits<double>::infinity();
+  for (int dz = -1; dz <= 1; ++dz)
+    for (int dy = -1; dy <= 1; ++dy)
+      for (int dx = -1; dx <= 1; ++dx) {
+        const CellId c = band.find(at + CellCoord(dx, dy, dz));
+        if (c == kNoCell)
+          continue;
+        const double d = (band.coord(c).cast<double>() - x).norm();
+        if (d < best_distance) {
+          best_distance = d;
+          best = c;
+        }
+      }
+  return best;
+}
+
+} // namespace segmentation
+} // namespace visfeat

@@ -1,0 +1,180 @@
+// ComponentSet on hand-painted sheets: the 6-connected flood of the cells at or above
+// min_radius, the numbering by smallest cell id, the vertex / edge / face classes in
+// the raw (paper) and default modes, and the parameter checks.
+
+#include "sheet_bands.h"
+
+#include <visfeat/core/common/error.h>
+#include <visfeat/core/segmentation/components.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+namespace {
+
+using visfeat::ComponentParameters;
+using visfeat::ComponentSet;
+using visfeat::FeatureClass;
+using visfeat_test::paintSheet;
+
+ComponentParameters
+smallParameters()
+{
+  ComponentParameters p;
+  p.min_radius = 3;
+  p.vertex_max_cells = 4;
+  p.dimensionality = 3.0;
+  p.face_min_depth = 3;
+  return p;
+}
+
+TEST(ComponentSetFlood, SixConnectedPiecesNumberedBySmallestCellId)
+{
+  // Three pieces at or above 3: B (ids 7, 8) comes first in id order, then A, then C.
+  // C's cells touch only by a corner: two components, not one.
+  const auto sheet = paintSheet({"1111111331",  // y = 0: B at x = 7, 8
+                                 "1111111111",  //
+                                 "1111111111",  //
+                                 "1331111111",  // y = 3: A
+                                 "1411114111",  // y = 4: A, C1 (x = 6)
+                                 "1111111411"}, // y = 5: C2 (x = 7), diagonal to C1
+                                4);
+  const ComponentSet set =
+    ComponentSet::extract(sheet.band, sheet.map, smallParameters(), false);
+  ASSERT_EQ(set.components().size(), 4u);
+  const auto& labels = set.cellLabels();
+  auto label = [&](int x, int y) { return labels[std::size_t(sheet.at(x, y))]; };
+  EXPECT_EQ(label(7, 0), 1u);
+  EXPECT_EQ(label(8, 0), 1u);
+  EXPECT_EQ(label(1, 3), 2u);
+  EXPECT_EQ(label(2, 3), 2u);
+  EXPECT_EQ(label(1, 4), 2u); // radius 4 >= 3 joins too
+  EXPECT_EQ(label(6, 4), 3u);
+  EXPECT_EQ(label(7, 5), 4u); // diagonal to (6, 4): its own component
+  EXPECT_EQ(label(0, 0), 0u); // below min_radius
+  EXPECT_EQ(set.components()[0].cells, 2u);
+  EXPECT_EQ(set.components()[1].cells, 3u);
+  std::size_t labelled = 0;
+  for (const auto l : labels)
+    labelled += l != 0;
+  EXPECT_EQ(labelled, 2u + 3u + 1u + 1u);
+}
+
+// A 7x7 square (depth 3: rings 0..3 from its border; 84 inner adjacencies, mean
+// 168 / 49 = 3.43), a 2x10 strip (depth 0; mean 56 / 20 = 2.8), an 8x3 block (depth 1;
+// mean 74 / 24 = 3.08) and a 2x2 blob, each inside a ring of radius-1 cells.
+visfeat_test::Sheet
+shapesSheet()
+{
+  return visfeat_test::sheetFromRadius(30, 14, 4, [](int x, int y) {
+    const bool square = x >= 1 && x <= 7 && y >= 1 && y <= 7;
+    const bool strip = x >= 10 && x <= 11 && y >= 1 && y <= 10;
+    const bool block = x >= 14 && x <= 21 && y >= 1 && y <= 3;
+    const bool blob = x >= 25 && x <= 26 && y >= 6 && y <= 7;
+    return square || strip || block || blob ? 3 : 1;
+  });
+}
+
+TEST(ComponentSetClasses, DefaultModeByDepth)
+{
+  const auto sheet = shapesSheet();
+  const ComponentSet set =
+    ComponentSet::extract(sheet.band, sheet.map, smallParameters(), false);
+  ASSERT_EQ(set.components().size(), 4u);
+  auto component = [&](int x, int y) {
+    return set.components()[set.cellLabels()[std::size_t(sheet.at(x, y))] - 1];
+  };
+  EXPECT_EQ(component(4, 4).cells, 49u);
+  EXPECT_EQ(component(4, 4).depth, 3u);
+  EXPECT_FLOAT_EQ(component(4, 4).mean_neighbours, 168.f / 49.f);
+  EXPECT_EQ(component(4, 4).feature_class, FeatureClass::kFace); // depth 3 >= 3
+  EXPECT_EQ(component(10, 5).cells, 20u);
+  EXPECT_EQ(component(10, 5).depth, 0u);
+  EXPECT_FLOAT_EQ(component(10, 5).mean_neighbours, 56.f / 20.f);
+  EXPECT_EQ(component(10, 5).feature_class, FeatureClass::kEdge);
+  EXPECT_EQ(component(15, 2).depth, 1u);
+  EXPECT_EQ(component(15, 2).feature_class, FeatureClass::kEdge); // depth 1 < 3
+  EXPECT_EQ(component(25, 6).cells, 4u);
+  EXPECT_EQ(component(25, 6).feature_class, FeatureClass::kVertex); // 4 <= 4 cells
+}
+
+TEST(ComponentSetClasses, RawModeByMeanNeighbours)
+{
+  const auto sheet = shapesSheet();
+  const ComponentSet set =
+    ComponentSet::extract(sheet.band, sheet.map, smallParameters(), true);
+  auto cls = [&](int x, int y) {
+    return set.components()[set.cellLabels()[std::size_t(sheet.at(x, y))] - 1]
+      .feature_class;
+  };
+  EXPECT_EQ(cls(4, 4), FeatureClass::kFace);    // 3.43 >= 3
+  EXPECT_EQ(cls(10, 5), FeatureClass::kEdge);   // 2.8 < 3
+  EXPECT_EQ(cls(15, 2), FeatureClass::kFace);   // 3.08 >= 3, unlike by depth
+  EXPECT_EQ(cls(25, 6), FeatureClass::kVertex); // size decides first
+}
+
+TEST(ComponentSetClasses, AWholePieceOfTheBandIsAsDeepAsItIsLarge)
+{
+  // Every cell of the band reaches min_radius: no border, depth = cells (a face).
+  const auto sheet = visfeat_test::sheetFromRadius(3, 3, 4, [](int, int) { return 4; });
+  ComponentParameters p = smallParameters();
+  p.face_min_depth = 9;
+  const ComponentSet set = ComponentSet::extract(sheet.band, sheet.map, p, false);
+  ASSERT_EQ(set.components().size(), 1u);
+  EXPECT_EQ(set.components()[0].depth, 9u);
+  EXPECT_EQ(set.components()[0].feature_class, FeatureClass::kFace);
+}
+
+std::string
+validationMessage(const ComponentParameters& p, int max_radius)
+{
+  try {
+    ComponentSet::validate(p, max_radius);
+  } catch (const visfeat::Error& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(ComponentSetValidate, NamesTheParameterItsRangeAndUnit)
+{
+  EXPECT_EQ(validationMessage(smallParameters(), 3), "");
+  ComponentParameters p = smallParameters();
+  p.min_radius = 5;
+  EXPECT_EQ(validationMessage(p, 4),
+            "min_radius 5 is out of range [1, max_radius = 4] (rings; raise max_radius "
+            "to at least min_radius)");
+  p = smallParameters();
+  p.min_radius = 0;
+  EXPECT_EQ(validationMessage(p, 4),
+            "min_radius 0 is out of range [1, max_radius = 4] (rings; raise max_radius "
+            "to at least min_radius)");
+  p = smallParameters();
+  p.vertex_max_cells = -1;
+  EXPECT_EQ(validationMessage(p, 4),
+            "vertex_max_cells -1 is out of range [0, 100000] (cells)");
+  p = smallParameters();
+  p.dimensionality = 6.5;
+  EXPECT_EQ(validationMessage(p, 4),
+            "dimensionality 6.5 is out of range [0, 6] (mean same-component "
+            "6-neighbours)");
+  p.dimensionality = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_NE(validationMessage(p, 4).find("dimensionality nan is out of range"),
+            std::string::npos);
+  p = smallParameters();
+  p.face_min_depth = 0;
+  EXPECT_EQ(validationMessage(p, 4),
+            "face_min_depth 0 is out of range [1, 1000] (cells)");
+}
+
+TEST(ComponentSetValidate, ExtractChecksAgainstTheMapsCap)
+{
+  const auto sheet = shapesSheet(); // max_radius 4
+  ComponentParameters p = smallParameters();
+  p.min_radius = 5;
+  EXPECT_THROW(ComponentSet::extract(sheet.band, sheet.map, p, false), visfeat::Error);
+}
+
+} // namespace
