@@ -143,9 +143,11 @@ TEST(SegmentationSteps, ContactsOfSetsAreTheLabelContactsSummedByRoot)
   const Sheet sheet = edgeSheet();
   Steps steps(sheet, smallParameters());
   seg::growCoresIntoRegions(steps.state);
-  steps.state.sets.join(2, 3); // the edge's set takes B: root 2
-  const seg::Contacts expected{{{1, 2}, 12}, {{2, 1}, 12}};
-  EXPECT_EQ(steps.state.contacts.through(steps.state.sets), expected);
+  // The two faces in one set (root 1): their contacts with the edge add up.
+  steps.state.sets.join(3, 1);
+  const seg::Contacts faces{{{1, 2}, 24}, {{2, 1}, 24}};
+  EXPECT_EQ(steps.state.contacts.through(steps.state.sets), faces);
+  // All in one set: no contact left.
   steps.state.sets.join(1, 2);
   EXPECT_TRUE(steps.state.contacts.through(steps.state.sets).empty());
 }
@@ -383,6 +385,19 @@ TEST(SegmentationSteps, ThinningKeepsFeatureWidthCellsEachSideOfTheSkeleton)
                 s.cellLabels()[std::size_t(sheet.at(20, 0))]);
     }
   }
+}
+
+TEST(LabelUnion, JoinKeepsTheSmallerRootAttachKeepsTheFirst)
+{
+  seg::LabelUnion sets(5);
+  sets.join(4, 2);
+  EXPECT_EQ(sets.find(4), 2u);
+  sets.attach(5, 2); // 2's set merges into 5, which keeps its root (and class)
+  EXPECT_EQ(sets.find(2), 5u);
+  EXPECT_EQ(sets.find(4), 5u);
+  sets.join(5, 1);
+  EXPECT_EQ(sets.find(4), 1u);
+  EXPECT_EQ(sets.find(3), 3u);
 }
 
 TEST(CoreLine, FitsAStraightRunOfCells)

@@ -14,15 +14,15 @@ namespace visfeat {
 namespace segmentation {
 
 /** \brief An edge is straight when its core cells lie within this many cells of their
- * line. Cores of noise-free edges are up to about 4 cells wide (the icosahedron's
- * 138-degree edges at 256), so their cells lie within 2 cells of the middle; 3 leaves
- * room for the noise mode's rough cores (7 models, sigma 0.22 and 0.32, 256).
- * Also the sideways tolerance of "on the line" (CoreLine::onLine, vertexAhead). */
+ * line. Set with the corners from edge lines (145ed0d: noise-free, 7 models x 3
+ * rotations at 256), where cores are up to about 4 cells wide (the icosahedron's
+ * 138-degree edges); kept for the noise mode (d39ae0a). Not swept. Also the sideways
+ * tolerance of "on the line" (CoreLine::onLine, the vertex ahead of an edge). */
 constexpr double kStraightTolerance = 3.0;
 
 /** \brief Fewest core cells for an edge's line to stand for it (corner drawing,
- * centres on straight edges): fewer cells give no direction worth trusting. Set with
- * the corners from edge lines (icosahedron, 3 rotations at 256); not swept. */
+ * centres on straight edges): fewer give no direction worth trusting. Set with the
+ * corners from edge lines (145ed0d, 7 models x 3 rotations at 256); not swept. */
 constexpr std::size_t kMinLineCells = 4;
 
 /** \brief Pieces of one straight edge join across any gap when each is at least this

@@ -14,7 +14,8 @@ namespace {
 /** Cells around a skeleton cell averaged into its centre (a ball of this radius,
  * cells): wider than the widest cores (about 4 cells, the icosahedron's 138-degree
  * edges at 256), short against the curvature of the cylinder's circles. Set with the
- * per-point middle lines (145ed0d: icosahedron precision 0.870 -> 0.998); not swept. */
+ * per-point middle lines (145ed0d, which took the icosahedron's precision from 0.870
+ * to 0.998); not swept. */
 constexpr int kSkeletonCentreRadius = 3;
 
 /** The skeleton around a cell is locally a line (it gets a tangent) where its spread
