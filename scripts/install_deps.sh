@@ -33,7 +33,7 @@ packages=(
   libeigen3-dev
   libboost-graph-dev
   libgtest-dev
-  libbenchmark-dev
+  nlohmann-json3-dev
   xvfb
   xauth
 )

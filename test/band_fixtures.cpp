@@ -1,5 +1,6 @@
 #include "band_fixtures.h"
 
+#include <support/portable_random.h>
 #include <support/synthetic_shapes.h>
 #include <visfeat/voxel_band_from_cloud.h>
 
@@ -59,7 +60,7 @@ cubeGrid(int n)
 Eigen::Matrix3d
 randomRotationMatrix(std::mt19937_64& rng)
 {
-  std::normal_distribution<double> normal(0.0, 1.0);
+  visfeat::synthetic::Normal normal(0.0, 1.0);
   Eigen::Quaterniond q(normal(rng), normal(rng), normal(rng), normal(rng));
   q.normalize();
   return q.toRotationMatrix();
@@ -69,8 +70,8 @@ CellBand
 ballShells(std::uint64_t seed)
 {
   std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> centre(7.0, 13.0);
-  std::uniform_real_distribution<double> rad(2.5, 4.5);
+  visfeat::synthetic::UniformReal centre(7.0, 13.0);
+  visfeat::synthetic::UniformReal rad(2.5, 4.5);
   struct Ball
   {
     Eigen::Vector3d c;
@@ -95,8 +96,8 @@ CellBand
 randomWalkBlob(std::uint64_t seed)
 {
   std::mt19937_64 rng(seed);
-  std::uniform_int_distribution<int> start(6, 11);
-  std::uniform_int_distribution<int> dir(0, 5);
+  visfeat::synthetic::UniformInt start(6, 11);
+  visfeat::synthetic::UniformInt dir(0, 5);
   static const CellCoord kDirs[6] = {CellCoord(-1, 0, 0), CellCoord(1, 0, 0),
                                      CellCoord(0, -1, 0), CellCoord(0, 1, 0),
                                      CellCoord(0, 0, -1), CellCoord(0, 0, 1)};
@@ -125,7 +126,7 @@ digitalPlane(std::uint64_t seed, double disc_radius)
 {
   std::mt19937_64 rng(seed);
   const Eigen::Matrix3d r = randomRotationMatrix(rng);
-  std::uniform_real_distribution<double> jitter(-0.5, 0.5);
+  visfeat::synthetic::UniformReal jitter(-0.5, 0.5);
   const int n = static_cast<int>(std::ceil(2 * disc_radius)) + 8;
   const Eigen::Vector3d c0 = Eigen::Vector3d::Constant(n / 2.0) +
                              Eigen::Vector3d(jitter(rng), jitter(rng), jitter(rng));
@@ -279,7 +280,7 @@ squareCloud(const Eigen::Vector3d& u,
             std::size_t count,
             std::mt19937_64& rng)
 {
-  std::uniform_real_distribution<double> coord(-0.5, 0.5);
+  visfeat::synthetic::UniformReal coord(-0.5, 0.5);
   pcl::PointCloud<pcl::PointXYZ> cloud;
   for (std::size_t i = 0; i < count; ++i) {
     const Eigen::Vector3d p = coord(rng) * u + coord(rng) * v;
@@ -295,8 +296,8 @@ creaseCloud(const Eigen::Matrix3d& frame,
             std::mt19937_64& rng)
 {
   const Eigen::Vector3d u = frame.col(0), v = frame.col(1), w = frame.col(2);
-  std::uniform_real_distribution<double> s(-0.5, 0.5);
-  std::uniform_real_distribution<double> t(0.0, 1.0);
+  visfeat::synthetic::UniformReal s(-0.5, 0.5);
+  visfeat::synthetic::UniformReal t(0.0, 1.0);
   pcl::PointCloud<pcl::PointXYZ> cloud;
   for (int face = 0; face < 2; ++face)
     for (std::size_t i = 0; i < count_per_face; ++i) {

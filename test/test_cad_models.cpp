@@ -2,10 +2,13 @@
 // characteristic, exact curve and face distances, uniform sampling, rotations, noise.
 
 #include <support/cad_models.h>
+#include <support/portable_random.h>
 #include <support/synthetic_shapes.h>
 #include <visfeat/core/common/error.h>
 
 #include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -370,7 +373,7 @@ TEST(CadModels, CurveDistanceIsExact)
 TEST(CadModels, RotationInvariance)
 {
   std::mt19937_64 rng(8);
-  std::uniform_real_distribution<double> coord(-2.0, 2.0);
+  visfeat::synthetic::UniformReal coord(-2.0, 2.0);
   for (const std::string& name : syn::cadModelNames()) {
     SCOPED_TRACE(name);
     const syn::CadModel model = syn::cadModelByName(name);
@@ -454,20 +457,26 @@ TEST(CadModels, SpacingAndReproducibility)
 
 TEST(CadModels, Json)
 {
-  const std::string json = syn::cadModelJson(syn::cadModelByName("box_with_hole"));
-  EXPECT_NE(json.find("\"name\": \"box_with_hole\""), std::string::npos);
-  EXPECT_NE(
-    json.find("\"counts\": {\"vertices\": 8, \"edges\": 14, \"straight_edges\": "
-              "12, \"circular_edges\": 2, \"faces\": 7}"),
-    std::string::npos);
-  EXPECT_NE(json.find("\"euler_characteristic\": 0"), std::string::npos);
-  EXPECT_NE(json.find("\"kind\": \"circle\", \"vertices\": [], \"faces\": [0, 6]"),
-            std::string::npos);
-  EXPECT_NE(json.find("\"kind\": \"cylindrical\""), std::string::npos);
-  EXPECT_EQ(std::count(json.begin(), json.end(), '{'),
-            std::count(json.begin(), json.end(), '}'));
-  EXPECT_EQ(std::count(json.begin(), json.end(), '['),
-            std::count(json.begin(), json.end(), ']'));
+  const std::string text = syn::cadModelJson(syn::cadModelByName("box_with_hole"));
+  nlohmann::json json;
+  ASSERT_NO_THROW(json = nlohmann::json::parse(text)) << text; // well-formed
+  EXPECT_EQ(json.at("name"), "box_with_hole");
+  EXPECT_EQ(json.at("counts"), nlohmann::json::parse(R"({"vertices": 8, "edges": 14,
+    "straight_edges": 12, "circular_edges": 2, "faces": 7})"));
+  EXPECT_EQ(json.at("euler_characteristic"), 0);
+  std::size_t circles = 0, rims_of_face_0 = 0;
+  for (const auto& edge : json.at("edges"))
+    if (edge.at("kind") == "circle") {
+      ++circles;
+      EXPECT_TRUE(edge.at("vertices").empty());
+      rims_of_face_0 += edge.at("faces") == nlohmann::json::array({0, 6});
+    }
+  EXPECT_EQ(circles, 2u);
+  EXPECT_EQ(rims_of_face_0, 1u); // the hole's rim on face 0, with the hole's wall
+  std::size_t cylindrical = 0;
+  for (const auto& face : json.at("faces"))
+    cylindrical += face.at("kind") == "cylindrical";
+  EXPECT_EQ(cylindrical, 1u);
 }
 
 TEST(CadModels, Errors)

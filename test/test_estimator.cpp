@@ -4,6 +4,7 @@
 
 #include "band_fixtures.h"
 #include "reference/brute_force.h"
+#include <support/portable_random.h>
 
 #include <visfeat/point_types.h>
 #include <visfeat/visibility_feature_estimation.h>
@@ -200,7 +201,7 @@ TEST(Estimator, SameOutputForShuffledPointsAndThreadCounts)
   std::vector<std::size_t> perm(cloud->size());
   std::iota(perm.begin(), perm.end(), 0);
   std::mt19937_64 rng(9);
-  std::shuffle(perm.begin(), perm.end(), rng);
+  visfeat::synthetic::shuffle(perm, rng);
   Cloud::Ptr shuffled(new Cloud);
   for (std::size_t i : perm)
     shuffled->push_back(cloud->points[i]);

@@ -1,5 +1,6 @@
 // smoothPoints: noise goes down on planes, exact planes stay, creases keep their sides
 // beyond the radius, results do not depend on the thread count, bad input is refused.
+#include <support/portable_random.h>
 #include <visfeat/core/band/point_smoothing.h>
 #include <visfeat/core/common/error.h>
 #include <visfeat/core/grid/grid_spec.h>
@@ -30,9 +31,9 @@ unitGrid()
 std::vector<Eigen::Vector3f>
 noisyPlane(const GridSpec& grid, double sigma_cells, unsigned seed)
 {
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> along(-0.8, 0.8);
-  std::normal_distribution<double> noise(0.0, sigma_cells * grid.cell_size);
+  visfeat::synthetic::RandomEngine rng(seed);
+  visfeat::synthetic::UniformReal along(-0.8, 0.8);
+  visfeat::synthetic::Normal noise(0.0, sigma_cells * grid.cell_size);
   const double area = 1.6 * 1.6;
   const auto count = static_cast<std::size_t>(area / std::pow(0.5 * grid.cell_size, 2));
   std::vector<Eigen::Vector3f> points;
@@ -91,8 +92,8 @@ TEST(PointSmoothing, CreaseSidesBeyondTheRadiusStay)
   // [-0.6, 0.6]). Beyond the radius every neighbourhood is one plane: no point moves.
   // Within it, points are pulled inside the crease by less than the radius.
   const GridSpec grid = unitGrid();
-  std::mt19937 rng(11);
-  std::uniform_real_distribution<double> u(-0.6, 0.6);
+  visfeat::synthetic::RandomEngine rng(11);
+  visfeat::synthetic::UniformReal u(-0.6, 0.6);
   std::vector<Eigen::Vector3f> points;
   for (int i = 0; i < 40000; ++i) {
     const double x = u(rng), y = u(rng);

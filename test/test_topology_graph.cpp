@@ -3,6 +3,7 @@
 // export and writeFile.
 
 #include "band_fixtures.h"
+#include <support/portable_random.h>
 
 #include <visfeat/core/band/voxel_band.h>
 #include <visfeat/core/common/error.h>
@@ -12,6 +13,8 @@
 #include <boost/graph/connected_components.hpp>
 
 #include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cctype>
@@ -155,250 +158,13 @@ struct Sheet
   }
 };
 
-// --- Minimal JSON reader (structure check) ------------------------------------
-
-struct Json
-{
-  enum class Type
-  {
-    kNull,
-    kBool,
-    kNumber,
-    kString,
-    kArray,
-    kObject
-  } type = Type::kNull;
-  bool boolean = false;
-  double number = 0.0;
-  std::string text; // string value, or the raw number text
-  std::vector<Json> items;
-  std::vector<std::pair<std::string, Json>> members;
-
-  const Json& operator[](const std::string& key) const
-  {
-    for (const auto& m : members)
-      if (m.first == key)
-        return m.second;
-    throw std::runtime_error("no member " + key);
-  }
-  bool has(const std::string& key) const
-  {
-    for (const auto& m : members)
-      if (m.first == key)
-        return true;
-    return false;
-  }
-};
-
-/** Strict recursive-descent JSON parser (RFC 8259); throws std::runtime_error. */
-class JsonParser
-{
-public:
-  explicit JsonParser(const std::string& s)
-      : s_(s)
-  {}
-
-  Json parseDocument()
-  {
-    Json v = parseValue();
-    skipSpace();
-    if (i_ != s_.size())
-      fail("trailing characters");
-    return v;
-  }
-
-private:
-  [[noreturn]] void fail(const std::string& what) const
-  {
-    throw std::runtime_error("JSON: " + what + " at offset " + std::to_string(i_));
-  }
-  void skipSpace()
-  {
-    while (i_ < s_.size() &&
-           (s_[i_] == ' ' || s_[i_] == '\n' || s_[i_] == '\t' || s_[i_] == '\r'))
-      ++i_;
-  }
-  bool consume(const std::string& word)
-  {
-    if (s_.compare(i_, word.size(), word) == 0) {
-      i_ += word.size();
-      return true;
-    }
-    return false;
-  }
-  void expect(char c)
-  {
-    skipSpace();
-    if (i_ >= s_.size() || s_[i_] != c)
-      fail(std::string("expected '") + c + "'");
-    ++i_;
-  }
-  Json parseValue()
-  {
-    skipSpace();
-    if (i_ >= s_.size())
-      fail("unexpected end");
-    Json v;
-    const char c = s_[i_];
-    if (c == '{') {
-      v.type = Json::Type::kObject;
-      ++i_;
-      skipSpace();
-      if (i_ < s_.size() && s_[i_] == '}') {
-        ++i_;
-        return v;
-      }
-      for (;;) {
-        skipSpace();
-        const std::string key = parseString();
-        expect(':');
-        v.members.emplace_back(key, parseValue());
-        skipSpace();
-        if (i_ < s_.size() && s_[i_] == ',') {
-          ++i_;
-          continue;
-        }
-        expect('}');
-        return v;
-      }
-    }
-    if (c == '[') {
-      v.type = Json::Type::kArray;
-      ++i_;
-      skipSpace();
-      if (i_ < s_.size() && s_[i_] == ']') {
-        ++i_;
-        return v;
-      }
-      for (;;) {
-        v.items.push_back(parseValue());
-        skipSpace();
-        if (i_ < s_.size() && s_[i_] == ',') {
-          ++i_;
-          continue;
-        }
-        expect(']');
-        return v;
-      }
-    }
-    if (c == '"') {
-      v.type = Json::Type::kString;
-      v.text = parseString();
-      return v;
-    }
-    if (consume("true")) {
-      v.type = Json::Type::kBool;
-      v.boolean = true;
-      return v;
-    }
-    if (consume("false")) {
-      v.type = Json::Type::kBool;
-      return v;
-    }
-    if (consume("null"))
-      return v;
-    return parseNumber();
-  }
-  std::string parseString()
-  {
-    if (i_ >= s_.size() || s_[i_] != '"')
-      fail("expected a string");
-    ++i_;
-    std::string out;
-    while (i_ < s_.size() && s_[i_] != '"') {
-      const unsigned char c = static_cast<unsigned char>(s_[i_]);
-      if (c < 0x20)
-        fail("raw control character in a string");
-      if (c != '\\') {
-        out += s_[i_++];
-        continue;
-      }
-      ++i_;
-      if (i_ >= s_.size())
-        fail("bad escape");
-      const char e = s_[i_++];
-      switch (e) {
-      case '"':
-      case '\\':
-      case '/':
-        out += e;
-        break;
-      case 'b':
-        out += '\b';
-        break;
-      case 'f':
-        out += '\f';
-        break;
-      case 'n':
-        out += '\n';
-        break;
-      case 'r':
-        out += '\r';
-        break;
-      case 't':
-        out += '\t';
-        break;
-      case 'u': {
-        if (i_ + 4 > s_.size())
-          fail("bad \\u escape");
-        const unsigned long code = std::stoul(s_.substr(i_, 4), nullptr, 16);
-        i_ += 4;
-        if (code >= 0x80)
-          fail("test parser handles only ASCII \\u escapes");
-        out += static_cast<char>(code);
-        break;
-      }
-      default:
-        fail("bad escape");
-      }
-    }
-    if (i_ >= s_.size())
-      fail("unterminated string");
-    ++i_;
-    return out;
-  }
-  Json parseNumber()
-  {
-    const std::size_t start = i_;
-    const auto digits = [&]() {
-      const std::size_t from = i_;
-      while (i_ < s_.size() && std::isdigit(static_cast<unsigned char>(s_[i_])))
-        ++i_;
-      return i_ > from;
-    };
-    if (i_ < s_.size() && s_[i_] == '-')
-      ++i_;
-    if (i_ < s_.size() && s_[i_] == '0')
-      ++i_;
-    else if (!digits())
-      fail("bad value");
-    if (i_ < s_.size() && s_[i_] == '.') {
-      ++i_;
-      if (!digits())
-        fail("bad fraction");
-    }
-    if (i_ < s_.size() && (s_[i_] == 'e' || s_[i_] == 'E')) {
-      ++i_;
-      if (i_ < s_.size() && (s_[i_] == '+' || s_[i_] == '-'))
-        ++i_;
-      if (!digits())
-        fail("bad exponent");
-    }
-    Json v;
-    v.type = Json::Type::kNumber;
-    v.text = s_.substr(start, i_ - start);
-    v.number = std::stod(v.text);
-    return v;
-  }
-
-  const std::string& s_;
-  std::size_t i_ = 0;
-};
+/** A JSON text parsed strictly (RFC 8259) by nlohmann-json; throws on bad syntax. */
+using Json = nlohmann::json;
 
 Json
 parseJson(const std::string& s)
 {
-  return JsonParser(s).parseDocument();
+  return Json::parse(s);
 }
 
 // --- Brute force ---------------------------------------------------------------
@@ -692,13 +458,13 @@ TEST(TopologyGraph, RandomLabelsMatchBruteForce)
   std::mt19937_64 rng(20240611);
   const GridSpec grid = testGrid(48, 48, 8);
   std::vector<CellCoord> cells;
-  std::uniform_int_distribution<int> pct(0, 99);
+  visfeat::synthetic::UniformInt pct(0, 99);
   for (int y = 1; y < 47; ++y)
     for (int x = 1; x < 47; ++x)
       if (pct(rng) >= 8)
         cells.emplace_back(x, y, 3);
   const VoxelBand band = bandOf(grid, cells);
-  std::uniform_int_distribution<int> coord(1, 46), cls(1, 3);
+  visfeat::synthetic::UniformInt coord(1, 46), cls(1, 3);
   std::vector<Eigen::Vector2i> seeds;
   std::vector<FeatureClass> classes;
   for (int s = 0; s < 24; ++s) {
@@ -830,8 +596,8 @@ TEST(TopologyGraph, ErrorsAndValidation)
   EXPECT_TRUE(empty.empty());
   EXPECT_EQ(empty.arcCount(), 0u);
   const Json j = parseJson(jsonOf(empty));
-  EXPECT_TRUE(j["nodes"].items.empty());
-  EXPECT_TRUE(j["arcs"].items.empty());
+  EXPECT_TRUE(j.at("nodes").is_array() && j.at("nodes").empty());
+  EXPECT_TRUE(j.at("arcs").is_array() && j.at("arcs").empty());
   EXPECT_NE(dotOf(empty).find("graph"), std::string::npos);
 }
 
@@ -878,71 +644,71 @@ TEST(TopologyGraph, JsonParsesAndHoldsTheGraph)
   const std::string text = jsonOf(g, meta);
   Json j;
   ASSERT_NO_THROW(j = parseJson(text)) << text;
-  EXPECT_EQ(j["format"].text, "visfeat-topology-graph");
-  EXPECT_EQ(j["version"].number, 1.0);
-  EXPECT_EQ(j["source"].text, meta.source);
-  EXPECT_EQ(j["grid"]["origin"].items.size(), 3u);
-  EXPECT_EQ(j["grid"]["origin"].items[0].number, -1.5);
-  EXPECT_EQ(j["grid"]["origin"].items[2].number, 0.25);
-  EXPECT_EQ(j["grid"]["cell_size"].number, 0.5);
-  EXPECT_EQ(j["grid"]["dims"].items[1].number, 16.0);
+  EXPECT_EQ(j.at("format"), "visfeat-topology-graph");
+  EXPECT_EQ(j.at("version"), 1);
+  EXPECT_EQ(j.at("source"), meta.source);
+  EXPECT_EQ(j.at("grid").at("origin").size(), 3u);
+  EXPECT_EQ(j.at("grid").at("origin")[0], -1.5);
+  EXPECT_EQ(j.at("grid").at("origin")[2], 0.25);
+  EXPECT_EQ(j.at("grid").at("cell_size"), 0.5);
+  EXPECT_EQ(j.at("grid").at("dims")[1], 16);
 
-  const Json& params = j["parameters"];
-  EXPECT_EQ(params["resolution"].type, Json::Type::kNumber);
-  EXPECT_EQ(params["resolution"].number, 256.0);
-  EXPECT_EQ(params["opacity"].number, -0.5);
-  EXPECT_EQ(params["tiny"].number, 1e-3);
-  EXPECT_EQ(params["raw"].type, Json::Type::kBool);
-  EXPECT_FALSE(params["raw"].boolean);
-  EXPECT_TRUE(params["repair"].boolean);
-  EXPECT_EQ(params["name"].type, Json::Type::kString);
-  EXPECT_EQ(params["octal"].type, Json::Type::kString);
-  EXPECT_EQ(params["octal"].text, "016");
-  EXPECT_EQ(params["nan"].type, Json::Type::kString);
-  EXPECT_EQ(params["empty"].type, Json::Type::kString);
-  EXPECT_EQ(params["quote\"key"].type, Json::Type::kString);
+  const Json& params = j.at("parameters");
+  EXPECT_TRUE(params.at("resolution").is_number());
+  EXPECT_EQ(params.at("resolution"), 256);
+  EXPECT_EQ(params.at("opacity"), -0.5);
+  EXPECT_EQ(params.at("tiny"), 1e-3);
+  EXPECT_TRUE(params.at("raw").is_boolean());
+  EXPECT_EQ(params.at("raw"), false);
+  EXPECT_EQ(params.at("repair"), true);
+  EXPECT_TRUE(params.at("name").is_string());
+  EXPECT_TRUE(params.at("octal").is_string());
+  EXPECT_EQ(params.at("octal"), "016");
+  EXPECT_TRUE(params.at("nan").is_string());
+  EXPECT_TRUE(params.at("empty").is_string());
+  EXPECT_TRUE(params.at("quote\"key").is_string());
 
-  EXPECT_EQ(j["counts"]["vertices"].number, 2.0);
-  EXPECT_EQ(j["counts"]["edges"].number, 2.0);
-  EXPECT_EQ(j["counts"]["faces"].number, 2.0);
-  EXPECT_EQ(j["counts"]["arcs"].number, static_cast<double>(g.arcCount()));
+  EXPECT_EQ(j.at("counts").at("vertices"), 2);
+  EXPECT_EQ(j.at("counts").at("edges"), 2);
+  EXPECT_EQ(j.at("counts").at("faces"), 2);
+  EXPECT_EQ(j.at("counts").at("arcs"), g.arcCount());
 
-  const Json& nodes = j["nodes"];
-  ASSERT_EQ(nodes.items.size(), g.size());
+  const Json& nodes = j.at("nodes");
+  ASSERT_EQ(nodes.size(), g.size());
   for (std::uint32_t id = 1; id <= g.size(); ++id) {
-    const Json& n = nodes.items[id - 1];
+    const Json& n = nodes[id - 1];
     const visfeat::GraphNode& node = g.node(id);
-    EXPECT_EQ(n["id"].number, static_cast<double>(id));
-    EXPECT_EQ(n["class"].text, TopologyGraph::className(node.feature_class));
-    EXPECT_EQ(n["cells"].number, static_cast<double>(node.cells));
-    EXPECT_EQ(n["points"].number, static_cast<double>(node.points));
+    EXPECT_EQ(n.at("id"), id);
+    EXPECT_EQ(n.at("class"), TopologyGraph::className(node.feature_class));
+    EXPECT_EQ(n.at("cells"), node.cells);
+    EXPECT_EQ(n.at("points"), node.points);
     for (const char* key : {"centroid", "min", "max"}) {
-      ASSERT_EQ(n[key].items.size(), 3u);
+      ASSERT_EQ(n.at(key).size(), 3u);
       const Eigen::Vector3d& v = std::string(key) == "centroid" ? node.centroid
                                  : std::string(key) == "min"    ? node.min
                                                                 : node.max;
       for (int a = 0; a < 3; ++a) {
-        const Json& x = n[key].items[static_cast<std::size_t>(a)];
+        const Json& x = n.at(key)[static_cast<std::size_t>(a)];
         if (std::isnan(v[a])) {
-          EXPECT_EQ(x.type, Json::Type::kNull);
+          EXPECT_TRUE(x.is_null());
         } else { // exact round trip
-          EXPECT_EQ(x.number, v[a]) << key;
+          EXPECT_EQ(x.get<double>(), v[a]) << key;
         }
       }
     }
   }
-  EXPECT_EQ(nodes.items[5]["centroid"].items[0].type, Json::Type::kNull);
-  EXPECT_EQ(nodes.items[0]["class"].text, "face");
-  EXPECT_EQ(nodes.items[1]["class"].text, "edge");
-  EXPECT_EQ(nodes.items[3]["class"].text, "vertex");
+  EXPECT_TRUE(nodes[5].at("centroid")[0].is_null());
+  EXPECT_EQ(nodes[0].at("class"), "face");
+  EXPECT_EQ(nodes[1].at("class"), "edge");
+  EXPECT_EQ(nodes[3].at("class"), "vertex");
 
-  const Json& arcs = j["arcs"];
-  ASSERT_EQ(arcs.items.size(), g.arcCount());
+  const Json& arcs = j.at("arcs");
+  ASSERT_EQ(arcs.size(), g.arcCount());
   const Arcs expected = g.arcs();
   for (std::size_t i = 0; i < expected.size(); ++i) {
-    ASSERT_EQ(arcs.items[i].items.size(), 2u);
-    EXPECT_EQ(arcs.items[i].items[0].number, expected[i].first);
-    EXPECT_EQ(arcs.items[i].items[1].number, expected[i].second);
+    ASSERT_EQ(arcs[i].size(), 2u);
+    EXPECT_EQ(arcs[i][0], expected[i].first);
+    EXPECT_EQ(arcs[i][1], expected[i].second);
   }
 
   // Doubles that need 17 digits, infinities and a stream locale do not break it.
@@ -953,14 +719,14 @@ TEST(TopologyGraph, JsonParsesAndHoldsTheGraph)
   GraphMetadata odd;
   odd.grid.cell_size = std::numeric_limits<double>::quiet_NaN();
   const Json k = parseJson(jsonOf(h, odd));
-  EXPECT_EQ(k["nodes"].items[0]["centroid"].items[0].number, 0.1);
-  EXPECT_EQ(k["nodes"].items[0]["centroid"].items[1].number, 1.0 / 3.0);
-  EXPECT_EQ(k["nodes"].items[0]["centroid"].items[2].number, -2.5e-300);
-  EXPECT_EQ(k["nodes"].items[0]["min"].items[0].type, Json::Type::kNull);
-  EXPECT_EQ(k["nodes"].items[0]["max"].items[0].number, 1e300);
-  EXPECT_EQ(k["grid"]["cell_size"].type, Json::Type::kNull);
-  EXPECT_EQ(k["source"].text, "");
-  EXPECT_TRUE(k["parameters"].members.empty());
+  EXPECT_EQ(k.at("nodes")[0].at("centroid")[0].get<double>(), 0.1);
+  EXPECT_EQ(k.at("nodes")[0].at("centroid")[1].get<double>(), 1.0 / 3.0);
+  EXPECT_EQ(k.at("nodes")[0].at("centroid")[2].get<double>(), -2.5e-300);
+  EXPECT_TRUE(k.at("nodes")[0].at("min")[0].is_null());
+  EXPECT_EQ(k.at("nodes")[0].at("max")[0].get<double>(), 1e300);
+  EXPECT_TRUE(k.at("grid").at("cell_size").is_null());
+  EXPECT_EQ(k.at("source"), "");
+  EXPECT_TRUE(k.at("parameters").is_object() && k.at("parameters").empty());
 }
 
 TEST(TopologyGraph, WriteFileByExtension)

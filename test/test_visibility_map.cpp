@@ -4,6 +4,7 @@
 
 #include "band_fixtures.h"
 #include "reference/brute_force.h"
+#include <support/portable_random.h>
 
 #include <visfeat/core/band/voxel_band.h>
 #include <visfeat/core/common/error.h>
@@ -224,7 +225,7 @@ TEST(VisibilityMap, SameRadiiForShuffledPoints)
   std::vector<std::size_t> perm(cloud.size());
   std::iota(perm.begin(), perm.end(), 0);
   std::mt19937_64 rng(3);
-  std::shuffle(perm.begin(), perm.end(), rng);
+  visfeat::synthetic::shuffle(perm, rng);
   pcl::PointCloud<pcl::PointXYZ> shuffled;
   for (std::size_t i : perm)
     shuffled.push_back(cloud.points[i]);

@@ -2,6 +2,7 @@
 // (gridForCloud + buildVoxelBand).
 
 #include "band_fixtures.h"
+#include <support/portable_random.h>
 
 #include <visfeat/core/band/voxel_band.h>
 #include <visfeat/core/common/error.h>
@@ -127,7 +128,7 @@ TEST(VoxelBand, FromCellsWithoutRepairKeepsExactlyTheCells)
 {
   for (std::uint64_t seed : {1u, 2u, 3u}) {
     std::mt19937_64 rng(seed);
-    std::uniform_int_distribution<int> coord(0, 15);
+    visfeat::synthetic::UniformInt coord(0, 15);
     CoordSet wanted;
     std::vector<CellCoord> cells;
     while (cells.size() < 600) {
@@ -162,7 +163,7 @@ TEST(VoxelBand, IdsDoNotDependOnInputOrder)
   const visfeat_test::CellBand shells = visfeat_test::ballShells(5);
   std::vector<CellCoord> shuffled = shells.cells;
   std::mt19937_64 rng(7);
-  std::shuffle(shuffled.begin(), shuffled.end(), rng);
+  visfeat::synthetic::shuffle(shuffled, rng);
   for (bool repair : {false, true}) {
     const VoxelBand a =
       VoxelBand::fromCells(shells.grid, shells.cells, withRepair(repair));
@@ -384,7 +385,7 @@ TEST(VoxelBandRepair, RandomSparseCells)
 {
   for (std::uint64_t seed : {11u, 12u, 13u, 14u}) {
     std::mt19937_64 rng(seed);
-    std::uniform_int_distribution<int> coord(1, 14);
+    visfeat::synthetic::UniformInt coord(1, 14);
     CoordSet set;
     std::vector<CellCoord> cells;
     while (cells.size() < 350) {
@@ -540,7 +541,7 @@ TEST(BandFromCloud, ShuffledPointsGiveTheSameBand)
   std::vector<std::size_t> perm(cloud.size());
   std::iota(perm.begin(), perm.end(), 0);
   std::mt19937_64 rng(17);
-  std::shuffle(perm.begin(), perm.end(), rng);
+  visfeat::synthetic::shuffle(perm, rng);
   pcl::PointCloud<pcl::PointXYZ> shuffled;
   for (std::size_t i : perm)
     shuffled.push_back(cloud.points[i]);

@@ -32,3 +32,22 @@ function(run name)
   set(${name}_rc "${rc}" PARENT_SCOPE)
   set(${name}_out "${out}" PARENT_SCOPE)
 endfunction()
+
+# read_json(<var> <file>): the file's text in <var>; empty when it does not exist.
+function(read_json var file)
+  set(text "")
+  if(EXISTS "${file}")
+    file(READ "${file}" text)
+  endif()
+  set(${var} "${text}" PARENT_SCOPE)
+endfunction()
+
+# json_value(<out> <json text> <key or index>...): the member at that path (string(JSON
+# GET), CMake 3.19+), or "<missing>" when the text is not JSON or has no such member.
+function(json_value out json)
+  string(JSON value ERROR_VARIABLE error GET "${json}" ${ARGN})
+  if(error)
+    set(value "<missing>")
+  endif()
+  set(${out} "${value}" PARENT_SCOPE)
+endfunction()

@@ -8,7 +8,7 @@
 # Bad inputs have a ctest each (bad_input_test.cmake); graphs, meshes and the automatic
 # resolution are checked by end_to_end_test.cmake.
 
-cmake_minimum_required(VERSION 3.16) # policies NEW (CMP0053: plain ${} expansion)
+cmake_minimum_required(VERSION 3.19) # string(JSON); policies NEW (CMP0053)
 
 include("${CMAKE_CURRENT_LIST_DIR}/script_test_common.cmake")
 require_definitions(smoke_test.cmake VISFEAT GENERATE WORK_DIR)
@@ -106,9 +106,10 @@ if(NOT visfeat_paper_out MATCHES "opacity 3, smoothing 0,")
                  "${visfeat_paper_out}")
 endif()
 if(EXISTS "${paper_graph}")
-  file(READ "${paper_graph}" paper_json)
-  if(NOT paper_json MATCHES "\"opacity\": 3\\.0+[,}]"
-     OR NOT paper_json MATCHES "\"paper_noise\": true")
+  read_json(paper_json "${paper_graph}")
+  json_value(opacity "${paper_json}" parameters opacity)
+  json_value(paper_noise "${paper_json}" parameters paper_noise)
+  if(NOT opacity EQUAL 3 OR NOT paper_noise STREQUAL "ON")
     report_failure("${paper_graph}: no opacity 3 and paper_noise true in its parameters")
   endif()
 else()
@@ -138,9 +139,11 @@ foreach(entry IN LISTS models)
   if(NOT EXISTS "${json}")
     report_failure("${json} was not written")
   else()
-    file(READ "${json}" truth)
-    if(NOT truth MATCHES "\"counts\": {\"vertices\": ${nv}, \"edges\": ${ne},"
-       OR NOT truth MATCHES "\"faces\": ${nf}}")
+    read_json(truth "${json}")
+    json_value(truth_vertices "${truth}" counts vertices)
+    json_value(truth_edges "${truth}" counts edges)
+    json_value(truth_faces "${truth}" counts faces)
+    if(NOT "${truth_vertices}/${truth_edges}/${truth_faces}" STREQUAL "${nv}/${ne}/${nf}")
       report_failure("${json}: counts are not ${nv}/${ne}/${nf}")
     else()
       message(STATUS "ok: ${json}: ${nv} vertices, ${ne} edges, ${nf} faces")

@@ -7,6 +7,8 @@
 #include "peers.h"
 #include "tool_utils.h"
 
+#include <core/common/json_document.h>
+
 #include <support/cad_models.h>
 #include <support/evaluation.h>
 #include <support/synthetic_shapes.h>
@@ -228,55 +230,57 @@ printRow(const Row& r)
   std::fflush(stdout);
 }
 
-std::string
-jsonString(const std::string& text)
-{
-  std::string out = "\"";
-  for (char c : text) {
-    if (c == '"' || c == '\\')
-      out += '\\';
-    if (static_cast<unsigned char>(c) < 0x20) {
-      out += ' ';
-      continue;
-    }
-    out += c;
-  }
-  return out + "\"";
-}
+using visfeat::json_document::Json;
 
-std::string
+/** A number, or null when it is undefined (a score of nothing, NaN). */
+Json
 jsonNumber(double v)
 {
-  if (!std::isfinite(v))
-    return "null";
-  std::ostringstream s;
-  s << std::setprecision(9) << v;
-  return s.str();
+  return std::isfinite(v) ? Json(v) : Json(nullptr);
 }
 
-void
-writeScores(std::ostream& out, const ev::PointScores& s)
+Json
+scoresJson(const ev::PointScores& s)
 {
-  out << "\"precision\": " << jsonNumber(s.precision())
-      << ", \"recall\": " << jsonNumber(s.recall())
-      << ", \"f1\": " << jsonNumber(s.f1()) << ", \"labeled\": " << s.labeled
-      << ", \"labeled_near\": " << s.labeled_near << ", \"near\": " << s.near
-      << ", \"near_labeled\": " << s.near_labeled;
+  return {{"precision", jsonNumber(s.precision())},
+          {"recall", jsonNumber(s.recall())},
+          {"f1", jsonNumber(s.f1())},
+          {"labeled", s.labeled},
+          {"labeled_near", s.labeled_near},
+          {"near", s.near},
+          {"near_labeled", s.near_labeled}};
 }
 
-void
-writePeer(std::ostream& out, const char* name, const PeerRow& p)
+Json
+peerJson(const PeerRow& p)
 {
-  out << ", \"" << name << "\": ";
-  if (!p.run) {
-    out << "{\"run\": false, \"note\": " << jsonString(p.note) << "}";
-    return;
-  }
-  out << "{\"run\": true, \"threshold\": " << jsonNumber(p.sweep.threshold)
-      << ", \"thresholds_tried\": " << p.sweep.candidates
-      << ", \"seconds\": " << jsonNumber(p.seconds) << ", ";
-  writeScores(out, p.sweep.scores);
-  out << "}";
+  if (!p.run)
+    return {{"run", false}, {"note", p.note}};
+  Json peer = {{"run", true},
+               {"threshold", jsonNumber(p.sweep.threshold)},
+               {"thresholds_tried", p.sweep.candidates},
+               {"seconds", jsonNumber(p.seconds)}};
+  peer.update(scoresJson(p.sweep.scores));
+  return peer;
+}
+
+Json
+visfeatJson(const Row& r)
+{
+  const ev::TopologyComparison& t = r.topology;
+  Json v = {
+    {"seconds", jsonNumber(r.seconds)},
+    {"found", {{"vertices", t.found[0]}, {"edges", t.found[1]}, {"faces", t.found[2]}}},
+    {"truth", {{"vertices", t.truth[0]}, {"edges", t.truth[1]}, {"faces", t.truth[2]}}},
+    {"counts_exact", t.countsExact()},
+    {"arcs_correct", t.arcsCorrect()},
+    {"curves_matched", t.curves_matched},
+    {"vertices_matched", t.vertices_matched},
+    {"faces_matched", t.faces_matched},
+    {"curves_linked", t.curves_linked}};
+  v.update(scoresJson(r.scores));
+  v["problems"] = t.problems;
+  return v;
 }
 
 bool
@@ -284,45 +288,34 @@ writeJson(const Settings& s, const std::vector<Row>& rows, std::string& error)
 {
   if (!vt::checkWritable(s.json, error))
     return false;
+  Json document = {{"format", "visfeat-eval"},
+                   {"version", 1},
+                   {"resolution", s.resolution},
+                   {"seed", s.seed},
+                   {"spacing_cells", kSpacingCells},
+                   {"pcl_k", kPclK},
+                   {"vcm_offset_cells", kVcmOffsetCells},
+                   {"vcm_convolution_cells", kVcmConvolutionCells},
+                   {"recall_cells", 1},
+                   {"precision_cells", 2},
+                   {"rows", Json::array()}};
+  for (const Row& r : rows) {
+    Json row = {{"model", r.model},
+                {"sigma_cells", jsonNumber(r.sigma)},
+                {"points", r.points},
+                {"cell", jsonNumber(r.cell)}};
+    if (!r.error.empty()) {
+      row["error"] = r.error;
+    } else {
+      row["visfeat"] = visfeatJson(r);
+      row["pcl_surface_variation"] = peerJson(r.pcl);
+      row["cgal_vcm"] = peerJson(r.cgal);
+    }
+    document["rows"].push_back(row);
+  }
   {
     std::ofstream out(vt::temporaryPath(s.json));
-    out << "{\"format\": \"visfeat-eval\", \"version\": 1, \"resolution\": "
-        << s.resolution << ", \"seed\": " << s.seed
-        << ", \"spacing_cells\": " << kSpacingCells << ", \"pcl_k\": " << kPclK
-        << ", \"vcm_offset_cells\": " << kVcmOffsetCells
-        << ", \"vcm_convolution_cells\": " << kVcmConvolutionCells
-        << ", \"recall_cells\": 1, \"precision_cells\": 2,\n \"rows\": [";
-    for (std::size_t i = 0; i < rows.size(); ++i) {
-      const Row& r = rows[i];
-      out << (i ? ",\n  " : "\n  ") << "{\"model\": " << jsonString(r.model)
-          << ", \"sigma_cells\": " << jsonNumber(r.sigma)
-          << ", \"points\": " << r.points << ", \"cell\": " << jsonNumber(r.cell);
-      if (!r.error.empty()) {
-        out << ", \"error\": " << jsonString(r.error) << "}";
-        continue;
-      }
-      const ev::TopologyComparison& t = r.topology;
-      out << ", \"visfeat\": {\"seconds\": " << jsonNumber(r.seconds)
-          << ", \"found\": {\"vertices\": " << t.found[0]
-          << ", \"edges\": " << t.found[1] << ", \"faces\": " << t.found[2]
-          << "}, \"truth\": {\"vertices\": " << t.truth[0]
-          << ", \"edges\": " << t.truth[1] << ", \"faces\": " << t.truth[2]
-          << "}, \"counts_exact\": " << (t.countsExact() ? "true" : "false")
-          << ", \"arcs_correct\": " << (t.arcsCorrect() ? "true" : "false")
-          << ", \"curves_matched\": " << t.curves_matched
-          << ", \"vertices_matched\": " << t.vertices_matched
-          << ", \"faces_matched\": " << t.faces_matched
-          << ", \"curves_linked\": " << t.curves_linked << ", ";
-      writeScores(out, r.scores);
-      out << ", \"problems\": [";
-      for (std::size_t k = 0; k < t.problems.size(); ++k)
-        out << (k ? ", " : "") << jsonString(t.problems[k]);
-      out << "]}";
-      writePeer(out, "pcl_surface_variation", r.pcl);
-      writePeer(out, "cgal_vcm", r.cgal);
-      out << "}";
-    }
-    out << "\n ]}\n";
+    visfeat::json_document::write(out, document);
     if (!out) {
       vt::discardOutput(s.json);
       error = "cannot write '" + s.json + "'";

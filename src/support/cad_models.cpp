@@ -1,5 +1,8 @@
 #include <support/cad_models.h>
+#include <support/portable_random.h>
 #include <visfeat/core/common/error.h>
+
+#include <core/common/json_document.h>
 
 #include <algorithm>
 #include <cmath>
@@ -707,27 +710,8 @@ eulerCharacteristic(const CadModel& model)
 std::string
 cadModelJson(const CadModel& model)
 {
-  std::ostringstream out;
-  out << std::setprecision(17);
-  const auto vec = [&](const Eigen::Vector3d& v) {
-    out << "[" << v.x() << ", " << v.y() << ", " << v.z() << "]";
-  };
-  const auto ids = [&](const std::vector<int>& list) {
-    out << "[";
-    for (std::size_t i = 0; i < list.size(); ++i)
-      out << (i ? ", " : "") << list[i];
-    out << "]";
-  };
-  const auto quoted = [](const std::string& text) {
-    std::string q = "\"";
-    for (char ch : text) {
-      if (ch == '"' || ch == '\\')
-        q += '\\';
-      if (static_cast<unsigned char>(ch) >= 0x20)
-        q += ch;
-    }
-    return q + "\"";
-  };
+  using visfeat::json_document::Json;
+  using visfeat::json_document::vector3;
   std::size_t circles = 0;
   for (const CadCurve& c : model.curves)
     circles += c.kind == CadCurve::Kind::kCircle ? 1 : 0;
@@ -735,65 +719,58 @@ cadModelJson(const CadModel& model)
   const auto vertex_faces = vertexFaces(model);
   const auto face_curves = faceCurves(model);
 
-  out << "{\n  \"name\": " << quoted(model.name) << ",\n";
-  out << "  \"counts\": {\"vertices\": " << model.vertices.size()
-      << ", \"edges\": " << model.curves.size()
-      << ", \"straight_edges\": " << model.curves.size() - circles
-      << ", \"circular_edges\": " << circles << ", \"faces\": " << model.faces.size()
-      << "},\n";
-  out << "  \"euler_characteristic\": " << eulerCharacteristic(model) << ",\n";
-  out << "  \"vertices\": [";
-  for (std::size_t v = 0; v < model.vertices.size(); ++v) {
-    out << (v ? ",\n" : "\n") << "    {\"id\": " << v << ", \"xyz\": ";
-    vec(model.vertices[v]);
-    out << ", \"edges\": ";
-    ids(vertex_curves[v]);
-    out << ", \"faces\": ";
-    ids(vertex_faces[v]);
-    out << "}";
-  }
-  out << (model.vertices.empty() ? "],\n" : "\n  ],\n");
-  out << "  \"edges\": [";
+  Json vertices = Json::array();
+  for (std::size_t v = 0; v < model.vertices.size(); ++v)
+    vertices.push_back({{"id", v},
+                        {"xyz", vector3(model.vertices[v])},
+                        {"edges", vertex_curves[v]},
+                        {"faces", vertex_faces[v]}});
+  Json edges = Json::array();
   for (std::size_t i = 0; i < model.curves.size(); ++i) {
     const CadCurve& c = model.curves[i];
     const bool circle = c.kind == CadCurve::Kind::kCircle;
-    out << (i ? ",\n" : "\n") << "    {\"id\": " << i << ", \"kind\": \""
-        << (circle ? "circle" : "straight") << "\", \"vertices\": ";
-    ids(circle ? std::vector<int>() : std::vector<int>{c.vertices[0], c.vertices[1]});
-    out << ", \"faces\": ";
-    ids({c.faces[0], c.faces[1]});
-    out << ", \"length\": " << curveLength(model, static_cast<int>(i));
+    Json edge = {{"id", i},
+                 {"kind", circle ? "circle" : "straight"},
+                 {"vertices", circle ? std::vector<int>()
+                                     : std::vector<int>{c.vertices[0], c.vertices[1]}},
+                 {"faces", {c.faces[0], c.faces[1]}},
+                 {"length", curveLength(model, static_cast<int>(i))}};
     if (circle) {
-      out << ", \"centre\": ";
-      vec(c.centre);
-      out << ", \"axis\": ";
-      vec(c.axis);
-      out << ", \"radius\": " << c.radius;
+      edge["centre"] = vector3(c.centre);
+      edge["axis"] = vector3(c.axis);
+      edge["radius"] = c.radius;
     }
-    out << "}";
+    edges.push_back(edge);
   }
-  out << (model.curves.empty() ? "],\n" : "\n  ],\n");
-  out << "  \"faces\": [";
+  Json faces = Json::array();
   for (std::size_t i = 0; i < model.faces.size(); ++i) {
     const CadFace& f = model.faces[i];
     const bool planar = f.kind == CadFace::Kind::kPlanar;
-    out << (i ? ",\n" : "\n") << "    {\"id\": " << i << ", \"kind\": \""
-        << (planar ? "planar" : "cylindrical")
-        << "\", \"area\": " << faceArea(model, static_cast<int>(i)) << ", \"edges\": ";
-    ids(face_curves[i]);
-    out << ", \"polygon\": ";
-    ids(f.polygon);
-    out << ", \"circles\": ";
-    ids(f.circles);
-    if (planar) {
-      out << ", \"normal\": ";
-      vec(f.normal);
-    } else
-      out << ", \"hole\": " << (f.hole ? "true" : "false");
-    out << "}";
+    Json face = {{"id", i},
+                 {"kind", planar ? "planar" : "cylindrical"},
+                 {"area", faceArea(model, static_cast<int>(i))},
+                 {"edges", face_curves[i]},
+                 {"polygon", f.polygon},
+                 {"circles", f.circles}};
+    if (planar)
+      face["normal"] = vector3(f.normal);
+    else
+      face["hole"] = f.hole;
+    faces.push_back(face);
   }
-  out << (model.faces.empty() ? "]\n" : "\n  ]\n");
-  out << "}\n";
+  Json document;
+  document["name"] = model.name;
+  document["counts"] = {{"vertices", model.vertices.size()},
+                        {"edges", model.curves.size()},
+                        {"straight_edges", model.curves.size() - circles},
+                        {"circular_edges", circles},
+                        {"faces", model.faces.size()}};
+  document["euler_characteristic"] = eulerCharacteristic(model);
+  document["vertices"] = vertices;
+  document["edges"] = edges;
+  document["faces"] = faces;
+  std::ostringstream out;
+  visfeat::json_document::write(out, document);
   return out.str();
 }
 
@@ -852,9 +829,9 @@ sampleCadModel(const CadModel& model, const SamplingOptions& options)
 
   std::mt19937_64 rng(options.seed);
   std::mt19937_64 noise_rng(options.seed ^ 0x9E3779B97F4A7C15ull); // a stream apart
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
-  std::normal_distribution<double> gauss(
-    0.0, options.noise_sigma > 0.0 ? options.noise_sigma : 1.0);
+  visfeat::synthetic::UniformReal unit(0.0, 1.0);
+  visfeat::synthetic::Normal gauss(0.0, options.noise_sigma > 0.0 ? options.noise_sigma
+                                                                  : 1.0);
   CadSamples out;
   out.points.reserve(count);
   out.face.reserve(count);

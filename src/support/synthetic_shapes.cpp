@@ -1,3 +1,4 @@
+#include <support/portable_random.h>
 #include <support/synthetic_shapes.h>
 #include <visfeat/core/common/error.h>
 
@@ -177,7 +178,7 @@ Eigen::Matrix3d
 randomRotation(std::uint64_t seed)
 {
   std::mt19937_64 rng(seed);
-  std::normal_distribution<double> normal;
+  visfeat::synthetic::Normal normal;
   Eigen::Quaterniond q;
   do
     q.coeffs() << normal(rng), normal(rng), normal(rng), normal(rng);
@@ -217,7 +218,7 @@ sampleSurface(const TriangleMesh& mesh, std::size_t count, std::uint64_t seed)
   if (cumulative.empty() || !(total > 0.0))
     return points;
   std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  visfeat::synthetic::UniformReal unit(0.0, 1.0);
   points.reserve(count);
   for (std::size_t i = 0; i < count; ++i) {
     const double pick = unit(rng) * total;

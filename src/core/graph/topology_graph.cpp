@@ -2,6 +2,8 @@
 #include <visfeat/core/common/error.h>
 #include <visfeat/core/graph/topology_graph.h>
 
+#include "../common/json_document.h"
+
 #include <algorithm>
 #include <cctype>
 #include <charconv>
@@ -33,125 +35,15 @@ wanted(FeatureClass from, FeatureClass to)
   return false;
 }
 
-// --- JSON helpers ------------------------------------------------------------
-
-void
-writeJsonString(std::ostream& out, const std::string& s)
+/** A parameter's value as JSON: a JSON number or true/false as such (strict JSON: no
+ * leading zeros, no trailing dot), anything else as a string. */
+json_document::Json
+parameterValue(const std::string& value)
 {
-  static const char* const kHex = "0123456789abcdef";
-  out << '"';
-  for (const char ch : s) {
-    const unsigned char c = static_cast<unsigned char>(ch);
-    switch (c) {
-    case '"':
-      out << "\\\"";
-      break;
-    case '\\':
-      out << "\\\\";
-      break;
-    case '\b':
-      out << "\\b";
-      break;
-    case '\f':
-      out << "\\f";
-      break;
-    case '\n':
-      out << "\\n";
-      break;
-    case '\r':
-      out << "\\r";
-      break;
-    case '\t':
-      out << "\\t";
-      break;
-    default:
-      if (c < 0x20 || c == 0x7f)
-        out << "\\u00" << kHex[c >> 4] << kHex[c & 0xf];
-      else
-        out << ch;
-    }
-  }
-  out << '"';
-}
-
-/** Shortest representation that reads back to the same double (locale-free); null
- * for NaN and infinities. */
-void
-writeJsonDouble(std::ostream& out, double v)
-{
-  if (!std::isfinite(v)) {
-    out << "null";
-    return;
-  }
-  char buf[64];
-  const std::to_chars_result r = std::to_chars(buf, buf + sizeof(buf), v);
-  if (r.ec != std::errc()) { // cannot happen with 64 bytes; keep a safe fallback
-    std::ostringstream s;
-    s.imbue(std::locale::classic());
-    s.precision(std::numeric_limits<double>::max_digits10);
-    s << v;
-    out << s.str();
-    return;
-  }
-  out.write(buf, r.ptr - buf);
-}
-
-void
-writeJsonVector(std::ostream& out, const Eigen::Vector3d& v)
-{
-  out << '[';
-  for (int i = 0; i < 3; ++i) {
-    if (i > 0)
-      out << ", ";
-    writeJsonDouble(out, v[i]);
-  }
-  out << ']';
-}
-
-/** JSON number grammar: -?(0|[1-9][0-9]*)(.[0-9]+)?([eE][+-]?[0-9]+)? */
-bool
-isJsonNumber(const std::string& s)
-{
-  std::size_t i = 0;
-  const std::size_t n = s.size();
-  const auto digit = [&](std::size_t k) {
-    return k < n && std::isdigit(static_cast<unsigned char>(s[k])) != 0;
-  };
-  if (i < n && s[i] == '-')
-    ++i;
-  if (!digit(i))
-    return false;
-  if (s[i] == '0')
-    ++i;
-  else
-    while (digit(i))
-      ++i;
-  if (i < n && s[i] == '.') {
-    ++i;
-    if (!digit(i))
-      return false;
-    while (digit(i))
-      ++i;
-  }
-  if (i < n && (s[i] == 'e' || s[i] == 'E')) {
-    ++i;
-    if (i < n && (s[i] == '+' || s[i] == '-'))
-      ++i;
-    if (!digit(i))
-      return false;
-    while (digit(i))
-      ++i;
-  }
-  return i == n;
-}
-
-void
-writeJsonValue(std::ostream& out, const std::string& value)
-{
-  if (value == "true" || value == "false" || isJsonNumber(value))
-    out << value;
-  else
-    writeJsonString(out, value);
+  json_document::Json parsed = json_document::Json::parse(value, nullptr, false);
+  if (!parsed.is_discarded() && (parsed.is_number() || parsed.is_boolean()))
+    return parsed;
+  return value;
 }
 
 char
@@ -557,53 +449,44 @@ TopologyGraph::writeDot(std::ostream& stream) const
 }
 
 void
-TopologyGraph::writeJson(std::ostream& stream, const GraphMetadata& meta) const
+TopologyGraph::writeJson(std::ostream& out, const GraphMetadata& meta) const
 {
-  std::ostringstream out;
-  out.imbue(std::locale::classic());
-  out << "{\n  \"format\": \"visfeat-topology-graph\",\n  \"version\": 1,\n";
-  out << "  \"source\": ";
-  writeJsonString(out, meta.source);
-  out << ",\n  \"grid\": {\"origin\": ";
-  writeJsonVector(out, meta.grid.origin);
-  out << ", \"cell_size\": ";
-  writeJsonDouble(out, meta.grid.cell_size);
-  out << ", \"dims\": [" << meta.grid.dims.x() << ", " << meta.grid.dims.y() << ", "
-      << meta.grid.dims.z() << "]},\n";
-  out << "  \"parameters\": {";
-  for (std::size_t i = 0; i < meta.parameters.size(); ++i) {
-    out << (i > 0 ? ", " : "");
-    writeJsonString(out, meta.parameters[i].first);
-    out << ": ";
-    writeJsonValue(out, meta.parameters[i].second);
-  }
-  out << "},\n";
-  const std::vector<std::pair<std::uint32_t, std::uint32_t>> all_arcs = arcs();
-  out << "  \"counts\": {\"vertices\": " << classCount(FeatureClass::kVertex)
-      << ", \"edges\": " << classCount(FeatureClass::kEdge)
-      << ", \"faces\": " << classCount(FeatureClass::kFace)
-      << ", \"arcs\": " << all_arcs.size() << "},\n";
-  out << "  \"nodes\": [";
+  using json = json_document::Json;
+  json parameters = json::object();
+  for (const auto& [name, value] : meta.parameters)
+    parameters[name] = parameterValue(value);
+  json nodes = json::array();
   for (std::size_t v = 0; v < size(); ++v) {
     const GraphNode& n = graph_[v];
-    out << (v > 0 ? ",\n    " : "\n    ");
-    out << "{\"id\": " << n.id << ", \"class\": \"" << className(n.feature_class)
-        << "\", \"cells\": " << n.cells << ", \"points\": " << n.points
-        << ", \"centroid\": ";
-    writeJsonVector(out, n.centroid);
-    out << ", \"min\": ";
-    writeJsonVector(out, n.min);
-    out << ", \"max\": ";
-    writeJsonVector(out, n.max);
-    out << '}';
+    nodes.push_back({{"id", n.id},
+                     {"class", className(n.feature_class)},
+                     {"cells", n.cells},
+                     {"points", n.points},
+                     {"centroid", json_document::vector3(n.centroid)},
+                     {"min", json_document::vector3(n.min)},
+                     {"max", json_document::vector3(n.max)}});
   }
-  out << (size() > 0 ? "\n  ],\n" : "],\n");
-  out << "  \"arcs\": [";
-  for (std::size_t i = 0; i < all_arcs.size(); ++i)
-    out << (i > 0 ? ", " : "") << '[' << all_arcs[i].first << ", " << all_arcs[i].second
-        << ']';
-  out << "]\n}\n";
-  stream << out.str();
+  json all_arcs = json::array();
+  for (const auto& [a, b] : arcs())
+    all_arcs.push_back({a, b});
+  const json grid = {
+    {"origin", json_document::vector3(meta.grid.origin)},
+    {"cell_size", meta.grid.cell_size},
+    {"dims", {meta.grid.dims.x(), meta.grid.dims.y(), meta.grid.dims.z()}}};
+  const json counts = {{"vertices", classCount(FeatureClass::kVertex)},
+                       {"edges", classCount(FeatureClass::kEdge)},
+                       {"faces", classCount(FeatureClass::kFace)},
+                       {"arcs", all_arcs.size()}};
+  json document;
+  document["format"] = "visfeat-topology-graph";
+  document["version"] = 1;
+  document["source"] = meta.source;
+  document["grid"] = grid;
+  document["parameters"] = parameters;
+  document["counts"] = counts;
+  document["nodes"] = nodes;
+  document["arcs"] = all_arcs;
+  json_document::write(out, document);
 }
 
 bool
