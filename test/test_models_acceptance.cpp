@@ -1,8 +1,9 @@
-// The whole pipeline on the generated CAD models at resolution 256, noise-free, under
-// random rotations: exact numbers of vertex, edge and face regions, and per-point
-// accuracy of the complete regions against each point's distance to the true sharp
-// curves. The cases listed are the ones the current method gets exactly right; the
-// closing notes of the components issue list those it does not (yet).
+// Acceptance (ctest -L acceptance): the whole pipeline on the generated CAD models at
+// resolution 256, noise-free and noisy, under random rotations: exact numbers of
+// vertex, edge and face regions, and per-point accuracy of the complete regions
+// against each point's distance to the true sharp curves. The cases listed are the
+// ones the current method gets exactly right; the closing notes of the components
+// issue list those it does not (yet).
 
 #include <support/cad_models.h>
 #include <support/evaluation.h>
@@ -296,76 +297,6 @@ TEST(Joining, NoiseSplitEdgesAreJoined)
 {
   const PipelineRun run = runPipeline("box_with_hole", 1, 256, 0.32, 0, 0);
   EXPECT_GT(run.counts[2], run.model.curves.size());
-}
-
-TEST(RawMode, KeepsThePapersLiteralComponents)
-{
-  // Raw mode labels only cells at or above min_radius and leaves the rest 0.
-  const synthetic::CadModel model =
-    synthetic::rotated(synthetic::cadModelByName("cube"), synthetic::randomRotation(7));
-  synthetic::SamplingOptions options;
-  options.count = synthetic::samplesForSpacing(model, 96, 0.5);
-  const synthetic::CadSamples samples = synthetic::sampleCadModel(model, options);
-  auto cloud = std::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
-  for (const auto& p : samples.points)
-    cloud->push_back(pcl::PointXYZ(p.x(), p.y(), p.z()));
-  visfeat::VisibilityFeatureEstimation<pcl::PointXYZ, visfeat::PointVisibility> est;
-  est.setInputCloud(cloud);
-  est.setResolution(96);
-  est.setMinRadius(11);
-  est.setMaxRadius(11);
-  est.setRawMode(true);
-  pcl::PointCloud<visfeat::PointVisibility> out;
-  est.compute(out);
-  ASSERT_EQ(out.size(), cloud->size());
-  const auto& map = est.getVisibilityMap();
-  const auto& band = est.getVoxelBand();
-  const auto& seg = est.getSegmentation();
-  std::size_t unlabeled = 0;
-  for (std::size_t c = 0; c < band.size(); ++c) {
-    const bool core = map.radii()[c] >= 11;
-    EXPECT_EQ(seg.cellLabels()[c] != 0, core) << "cell " << c;
-    unlabeled += !core;
-  }
-  EXPECT_GT(unlabeled, 0u);
-  // Its components are exactly the cores.
-  EXPECT_EQ(seg.regions().size(), seg.cores().components().size());
-}
-
-TEST(SegmentationParameters, OutOfRangeIsRejectedByName)
-{
-  const auto rejects = [](visfeat::SegmentationParameters p, const std::string& name) {
-    try {
-      visfeat::FeatureSegmentation::validate(p, 16);
-    } catch (const visfeat::Error& e) {
-      return std::string(e.what()).find(name) != std::string::npos;
-    }
-    return false;
-  };
-  visfeat::SegmentationParameters p;
-  EXPECT_NO_THROW(visfeat::FeatureSegmentation::validate(p, 16));
-  p.vertex_reach = 0;
-  EXPECT_TRUE(rejects(p, "vertex_reach"));
-  p = {};
-  p.vertex_reach = -5;
-  EXPECT_TRUE(rejects(p, "vertex_reach"));
-  p = {};
-  p.feature_width = -1;
-  EXPECT_TRUE(rejects(p, "feature_width"));
-  p = {};
-  p.join_distance = -1;
-  EXPECT_TRUE(rejects(p, "join_distance"));
-  p.join_distance = 1001;
-  EXPECT_TRUE(rejects(p, "join_distance"));
-  p = {};
-  p.point_feature_distance = -0.5;
-  EXPECT_TRUE(rejects(p, "point_feature_distance"));
-  p = {};
-  p.min_piece_cells = -1;
-  EXPECT_TRUE(rejects(p, "min_piece_cells"));
-  p = {};
-  p.components.min_radius = 17; // above the cap of 16
-  EXPECT_TRUE(rejects(p, "min_radius"));
 }
 
 } // namespace
