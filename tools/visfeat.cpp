@@ -9,13 +9,10 @@
 #include "common/automatic_resolution.h"
 #include "common/cloud_input.h"
 #include "common/mesh_input.h"
-#include "common/output_files.h"
 #include "common/tool_main.h"
-#include "picture/render_picture.h"
 #include "visfeat_options.h"
 #include "visfeat_outputs.h"
 
-#include <visfeat/core/common/error.h>
 #include <visfeat/core/grid/grid_spec.h>
 #include <visfeat/core/visibility/visibility_map.h>
 #include <visfeat/point_types.h>
@@ -24,13 +21,9 @@
 #include <pcl/common/io.h>
 #include <pcl/console/print.h>
 #include <pcl/console/time.h>
-#include <pcl/conversions.h>
-#include <pcl/io/pcd_io.h>
 
 #include <chrono>
 #include <cstdio>
-#include <filesystem>
-#include <fstream>
 #include <memory>
 #include <mutex>
 #include <new>
