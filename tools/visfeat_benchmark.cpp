@@ -2,7 +2,8 @@
 // several resolutions, phase by phase, against PCL's NormalEstimationOMP (k = 30) on
 // the same cloud -- the target is to cost no more than normal estimation.
 
-#include "tool_utils.h"
+#include "common/arguments.h"
+#include "common/tool_main.h"
 
 #include <support/cad_models.h>
 #include <support/synthetic_shapes.h>

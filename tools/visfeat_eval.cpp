@@ -4,8 +4,10 @@
 // labels -- beside the best F1 of PCL's surface variation and (when built with CGAL)
 // CGAL's Voronoi Covariance Measure on the same cloud in the same run.
 
+#include "common/arguments.h"
+#include "common/output_files.h"
+#include "common/tool_main.h"
 #include "peers.h"
-#include "tool_utils.h"
 
 #include <core/common/json_document.h>
 

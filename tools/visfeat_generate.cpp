@@ -3,7 +3,9 @@
 // point the distance to the nearest true sharp curve and the face it was sampled from;
 // and, on request, the model's vertices, edges, faces and incidences as JSON.
 
-#include "tool_utils.h"
+#include "common/arguments.h"
+#include "common/output_files.h"
+#include "common/tool_main.h"
 
 #include <support/cad_models.h>
 #include <support/synthetic_shapes.h>
@@ -21,6 +23,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <new>
 #include <string>
 #include <system_error>
@@ -127,77 +130,100 @@ writeTruth(const std::string& path, const syn::CadModel& model, std::string& err
   return false;
 }
 
-int
-run(int argc, char** argv)
+/** \brief The command line, read and checked. */
+struct Options
 {
-  const vt::Arguments args(
-    argc, argv, {"-resolution", "-spacing", "-points", "-seed", "-noise", "-truth"},
-    {"-q", "-h", "--help"});
-  if (!args.ok())
-    return fail(args.error());
-  if (args.has("-q"))
-    vt::beQuiet();
-  if (args.positional().size() != 2)
-    return fail("expected a model and an output .pcd, got " +
-                std::to_string(args.positional().size()) + " argument(s) (see -h)");
-  const std::string name = args.positional()[0];
-  const std::string output = args.positional()[1];
-  const std::string truth = args.value("-truth");
-
+  std::string name;
+  std::string output;
+  std::string truth;
   int resolution = kDefaultResolution;
   double spacing = kDefaultSpacing;
-  long long points = 0;
+  long long points = 0; // 0 = from the spacing
   long long seed = kDefaultSeed;
   double noise = kDefaultNoise;
-  std::string error;
+};
+
+/** \brief Read and check the options, the model name and the outputs (the right
+ * extensions, writable, distinct) before any work. */
+bool
+readOptions(const vt::Arguments& args, Options& opt, std::string& error)
+{
+  if (args.positional().size() != 2) {
+    error = "expected a model and an output .pcd, got " +
+            std::to_string(args.positional().size()) + " argument(s) (see -h)";
+    return false;
+  }
+  opt.name = args.positional()[0];
+  opt.output = args.positional()[1];
+  opt.truth = args.value("-truth");
   if (!args.getInteger("-resolution", visfeat::GridSpec::kMinResolution,
-                       visfeat::GridSpec::kMaxResolution, resolution, error) ||
-      !args.getReal("-spacing", 1e-3, 1e3, spacing, error) ||
-      !args.getInteger("-points", 1, kMaxPoints, points, error) ||
-      !args.getInteger("-seed", 0, std::numeric_limits<long long>::max(), seed,
+                       visfeat::GridSpec::kMaxResolution, opt.resolution, error) ||
+      !args.getReal("-spacing", 1e-3, 1e3, opt.spacing, error) ||
+      !args.getInteger("-points", 1, kMaxPoints, opt.points, error) ||
+      !args.getInteger("-seed", 0, std::numeric_limits<long long>::max(), opt.seed,
                        error) ||
-      !args.getReal("-noise", 0.0, 1e6, noise, error))
-    return fail(error);
+      !args.getReal("-noise", 0.0, 1e6, opt.noise, error))
+    return false;
   if (args.has("-points") && args.has("-spacing"))
     print_warn("-points given: -spacing is ignored\n");
-  if (args.has("-truth") && truth.empty())
-    return fail("-truth expects a file name");
-
+  if (args.has("-truth") && opt.truth.empty()) {
+    error = "-truth expects a file name";
+    return false;
+  }
   bool known = false;
   for (const auto& n : syn::cadModelNames())
-    known = known || n == name;
-  if (!known)
-    return fail("unknown model '" + name + "' (known: " + modelList() + ")");
-  if (vt::lowerExtension(output) != ".pcd")
-    return fail("output '" + output + "' must have the extension .pcd");
-  if (!vt::checkWritable(output, error))
-    return fail(error);
-  if (!truth.empty()) {
-    if (vt::lowerExtension(truth) != ".json")
-      return fail("truth output '" + truth + "' must have the extension .json");
-    if (truth == output)
-      return fail("the truth and the cloud cannot be the same file");
-    if (!vt::checkWritable(truth, error))
-      return fail(error);
+    known = known || n == opt.name;
+  if (!known) {
+    error = "unknown model '" + opt.name + "' (known: " + modelList() + ")";
+    return false;
   }
+  if (vt::lowerExtension(opt.output) != ".pcd") {
+    error = "output '" + opt.output + "' must have the extension .pcd";
+    return false;
+  }
+  if (!vt::checkWritable(opt.output, error))
+    return false;
+  if (opt.truth.empty())
+    return true;
+  if (vt::lowerExtension(opt.truth) != ".json") {
+    error = "truth output '" + opt.truth + "' must have the extension .json";
+    return false;
+  }
+  if (opt.truth == opt.output) {
+    error = "the truth and the cloud cannot be the same file";
+    return false;
+  }
+  return vt::checkWritable(opt.truth, error);
+}
 
+/** \brief The model under its random rotation, sampled into `cloud`, printing what
+ * was generated. */
+bool
+generate(const Options& opt,
+         syn::CadModel& model,
+         pcl::PointCloud<vt::PointGenerated>& cloud,
+         std::string& error)
+{
   TicToc tt;
   tt.tic();
   print_highlight("Generating ");
-  print_value("%s ", name.c_str());
-  const std::uint64_t seed64 = static_cast<std::uint64_t>(seed);
-  const syn::CadModel model =
-    syn::rotated(syn::cadModelByName(name), syn::randomRotation(seed64));
-  const double cell = syn::cellSize(model, resolution);
-  const std::size_t count = points > 0
-                              ? static_cast<std::size_t>(points)
-                              : syn::samplesForSpacing(model, resolution, spacing);
-  if (count == 0)
-    return fail("no points to generate (spacing too large?)");
-  if (count > static_cast<std::size_t>(kMaxPoints))
-    return fail(std::to_string(count) +
-                " points: too many (spacing too small?); the limit is " +
-                std::to_string(kMaxPoints));
+  print_value("%s ", opt.name.c_str());
+  const std::uint64_t seed64 = static_cast<std::uint64_t>(opt.seed);
+  model = syn::rotated(syn::cadModelByName(opt.name), syn::randomRotation(seed64));
+  const double cell = syn::cellSize(model, opt.resolution);
+  const std::size_t count =
+    opt.points > 0 ? static_cast<std::size_t>(opt.points)
+                   : syn::samplesForSpacing(model, opt.resolution, opt.spacing);
+  if (count == 0) {
+    error = "no points to generate (spacing too large?)";
+    return false;
+  }
+  if (count > static_cast<std::size_t>(kMaxPoints)) {
+    error = std::to_string(count) +
+            " points: too many (spacing too small?); the limit is " +
+            std::to_string(kMaxPoints);
+    return false;
+  }
   // The samples with their truth, the cloud and PCL's write buffer.
   visfeat::checkMemory(static_cast<std::uint64_t>(count) *
                          (sizeof(Eigen::Vector3f) + sizeof(int) + sizeof(double) +
@@ -206,10 +232,9 @@ run(int argc, char** argv)
   syn::SamplingOptions options;
   options.count = count;
   options.seed = seed64;
-  options.noise_sigma = noise * cell;
+  options.noise_sigma = opt.noise * cell;
   const syn::CadSamples samples = syn::sampleCadModel(model, options);
 
-  pcl::PointCloud<vt::PointGenerated> cloud;
   cloud.resize(samples.points.size());
   for (std::size_t i = 0; i < samples.points.size(); ++i) {
     vt::PointGenerated& p = cloud[i];
@@ -228,22 +253,28 @@ run(int argc, char** argv)
   print_info(" ms : ");
   print_value("%zu", cloud.size());
   print_info(" points; resolution ");
-  print_value("%d", resolution);
+  print_value("%d", opt.resolution);
   print_info(", cell ");
   print_value("%g", cell);
-  if (points > 0)
+  if (opt.points > 0)
     print_info(", count given");
   else {
     print_info(", spacing ");
-    print_value("%g", spacing);
+    print_value("%g", opt.spacing);
     print_info(" cells");
   }
   print_info(", noise ");
-  print_value("%g", noise);
+  print_value("%g", opt.noise);
   print_info(" cells, seed ");
-  print_value("%lld", seed);
+  print_value("%lld", opt.seed);
   print_info("]\n");
+  return true;
+}
 
+/** \brief The model's counts: vertices, edges by kind, faces, Euler characteristic. */
+void
+printTruth(const syn::CadModel& model)
+{
   std::size_t circles = 0;
   for (const auto& c : model.curves)
     circles += c.kind == syn::CadCurve::Kind::kCircle ? 1 : 0;
@@ -260,40 +291,73 @@ run(int argc, char** argv)
   print_info(" faces; Euler characteristic ");
   print_value("%d", syn::eulerCharacteristic(model));
   print_info("\n");
+}
 
-  // Both files are written under temporary names and renamed only when both are
-  // complete, so a failure leaves neither.
+/** \brief Write the cloud and the truth under temporary names and rename them only
+ * when both are complete, so a failure leaves neither. */
+bool
+writeOutputs(const Options& opt,
+             const syn::CadModel& model,
+             const pcl::PointCloud<vt::PointGenerated>& cloud,
+             std::string& error)
+{
+  TicToc tt;
   tt.tic();
   print_highlight("Saving ");
-  print_value("%s ", output.c_str());
-  if (!truth.empty())
-    print_value("%s ", truth.c_str());
+  print_value("%s ", opt.output.c_str());
+  if (!opt.truth.empty())
+    print_value("%s ", opt.truth.c_str());
   pcl::PCDWriter writer;
-  const int rc =
-    vt::quietly([&] { return writer.writeBinary(vt::temporaryPath(output), cloud); });
+  const int rc = vt::quietly(
+    [&] { return writer.writeBinary(vt::temporaryPath(opt.output), cloud); });
   if (rc < 0) {
-    vt::discardOutput(output);
+    vt::discardOutput(opt.output);
     print_info("\n");
-    return fail("cannot write '" + output + "' (disk full or not writable?)");
+    error = "cannot write '" + opt.output + "' (disk full or not writable?)";
+    return false;
   }
-  if (!truth.empty() && !writeTruth(truth, model, error)) {
-    vt::discardOutput(output);
+  if (!opt.truth.empty() && !writeTruth(opt.truth, model, error)) {
+    vt::discardOutput(opt.output);
     print_info("\n");
-    return fail(error);
+    return false;
   }
-  if (!vt::commitOutput(output, error)) {
-    if (!truth.empty())
-      vt::discardOutput(truth);
-    return fail(error);
+  if (!vt::commitOutput(opt.output, error)) {
+    if (!opt.truth.empty())
+      vt::discardOutput(opt.truth);
+    return false;
   }
-  if (!truth.empty() && !vt::commitOutput(truth, error)) {
+  if (!opt.truth.empty() && !vt::commitOutput(opt.truth, error)) {
     std::error_code ec;
-    std::filesystem::remove(output, ec);
-    return fail(error);
+    std::filesystem::remove(opt.output, ec);
+    return false;
   }
   print_info("[done, ");
   print_value("%g", tt.toc());
   print_info(" ms]\n");
+  return true;
+}
+
+int
+run(int argc, char** argv)
+{
+  const vt::Arguments args(
+    argc, argv, {"-resolution", "-spacing", "-points", "-seed", "-noise", "-truth"},
+    {"-q", "-h", "--help"});
+  if (!args.ok())
+    return fail(args.error());
+  if (args.has("-q"))
+    vt::beQuiet();
+  Options opt;
+  std::string error;
+  if (!readOptions(args, opt, error))
+    return fail(error);
+  syn::CadModel model;
+  pcl::PointCloud<vt::PointGenerated> cloud;
+  if (!generate(opt, model, cloud, error))
+    return fail(error);
+  printTruth(model);
+  if (!writeOutputs(opt, model, cloud, error))
+    return fail(error);
   return 0;
 }
 

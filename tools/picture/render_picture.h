@@ -3,12 +3,11 @@
 // by visibility radius on a blue-to-red ramp (the paper's Figure 3). Not installed, not
 // public API; the only part of visfeat that needs PCL's visualization module (VTK).
 //
-// Rendering is offscreen through pcl::visualization::PCLVisualizer. Debian's VTK 9 is
-// built for X only (no OSMesa, no EGL), so even offscreen it needs an X display: a
-// headless machine runs the tool under `xvfb-run -a` (package xvfb).
+// Rendering is offscreen through pcl::visualization::PCLVisualizer, on the X display
+// of xDisplay() (picture_requests.h); the camera comes from picture_camera.h.
 #pragma once
 
-#include "tool_utils.h"
+#include "picture/picture_requests.h"
 
 #include <visfeat/core/graph/topology_graph.h>
 #include <visfeat/point_types.h>
@@ -17,7 +16,6 @@
 
 #include <cstddef>
 #include <string>
-#include <vector>
 
 namespace visfeat_tools {
 
@@ -36,7 +34,7 @@ enum class PictureMode
 struct PictureOptions
 {
   PictureMode mode = PictureMode::kClasses;
-  /** \brief Image size in pixels. Range [kMinSize, kMaxSize]. */
+  /** \brief Image size in pixels. Range [kMinPictureSize, kMaxPictureSize]. */
   int width = 1024;
   int height = 768;
   /** \brief Upper end of the radius ramp, in rings (the tool's max_radius). */
@@ -47,23 +45,7 @@ struct PictureOptions
   std::size_t band_cells = 0;
   /** \brief One line of text in the top left corner (e.g. the input file name). */
   std::string title;
-
-  static constexpr int kMinSize = 64;
-  static constexpr int kMaxSize = 8192;
 };
-
-/** \brief True when this build of the tool can render pictures (PCL's visualization
- * module was found at configure time). */
-bool picturesCompiledIn();
-
-/** \brief Check, before any work, that pictures can be rendered here: compiled in and
- * an X display can be opened. On failure `error` is one line saying how to fix it. */
-bool checkPictureSupport(std::string& error);
-
-/** \brief Parse "WxH" (e.g. "800x600") into width and height, each in
- * [PictureOptions::kMinSize, PictureOptions::kMaxSize]. */
-bool
-parsePictureSize(const std::string& text, int& width, int& height, std::string& error);
 
 /** \brief Render `cloud` (the estimator's output) with `graph` as a PNG written to
  * `file` (any name; the tool passes its temporary name). Returns false with a one-line
@@ -73,34 +55,6 @@ bool renderPicture(const pcl::PointCloud<visfeat::PointVisibility>& cloud,
                    const PictureOptions& options,
                    const std::string& file,
                    std::string& error);
-
-/** \brief The tool's picture options: -png, -png_radius, -png_size. */
-struct PictureRequests
-{
-  /** \brief -png: classes and graph; "" = none. */
-  std::string classes;
-  /** \brief -png_radius: the visibility map; "" = none. */
-  std::string radius;
-  int width = 1024;
-  int height = 768;
-
-  /** \brief The requested files (0, 1 or 2). */
-  std::vector<std::string> paths() const;
-};
-
-/** \brief The option names for vt::Arguments (all take a value). */
-const std::vector<std::string>& pictureOptionNames();
-
-/** \brief Print the help lines of the picture options. */
-void printPictureHelp();
-
-/** \brief Read and check the picture options before any work: .png names, writable,
- * different from each other and from `other_outputs`, and rendering possible here
- * (checkPictureSupport). On failure `error` is one line. */
-bool parsePictureRequests(const Arguments& args,
-                          const std::vector<std::string>& other_outputs,
-                          PictureRequests& requests,
-                          std::string& error);
 
 /** \brief Render the requested pictures to their temporary names
  * (temporaryPath(path)), printing a "Rendering ..." line; commitOutput() moves them

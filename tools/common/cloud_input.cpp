@@ -1,0 +1,387 @@
+// Cloud input of the visfeat tools; see cloud_input.h.
+
+#include "common/cloud_input.h"
+
+#include "common/arguments.h"
+#include "common/tool_main.h"
+
+#include <pcl/common/io.h>
+#include <pcl/conversions.h>
+#include <pcl/io/pcd_io.h>
+#include <pcl/io/ply_io.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <sstream>
+#include <system_error>
+#include <vector>
+
+namespace visfeat_tools {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+/** \brief What the header lines before DATA announce. */
+struct PcdHeader
+{
+  std::size_t fields = 0, sizes = 0, types = 0, counts = 0;
+  std::vector<long long> size_values, count_values;
+  bool have_width = false, have_points = false;
+  long long width = 0, height = 1, points = -1;
+};
+
+/** \brief Append every value, parsed as an integer >= 0, to `out`; false at the first
+ * one that is not. */
+bool
+nonNegativeIntegers(const std::vector<std::string>& values, std::vector<long long>& out)
+{
+  for (const auto& v : values) {
+    long long n = 0;
+    if (!parseInteger(v, n) || n < 0)
+      return false;
+    out.push_back(n);
+  }
+  return true;
+}
+
+/** \brief Record one header line other than DATA (`key` and its `values`) in `header`;
+ * false + `problem` when it is malformed or not a PCD header line. */
+bool
+readHeaderLine(const std::string& line,
+               const std::string& key,
+               const std::vector<std::string>& values,
+               PcdHeader& header,
+               std::string& problem)
+{
+  if (key == "VERSION" || key == "VIEWPOINT")
+    return true;
+  if (key == "FIELDS" || key == "COLUMNS") {
+    header.fields = values.size();
+  } else if (key == "SIZE") {
+    header.sizes = values.size();
+    if (!nonNegativeIntegers(values, header.size_values)) {
+      problem = "invalid PCD header: bad SIZE line";
+      return false;
+    }
+    for (long long s : header.size_values)
+      if (s != 1 && s != 2 && s != 4 && s != 8) {
+        problem = "invalid PCD header: field size " + std::to_string(s) + " in SIZE";
+        return false;
+      }
+  } else if (key == "TYPE") {
+    header.types = values.size();
+    for (const auto& t : values)
+      if (t != "F" && t != "I" && t != "U") {
+        problem = "invalid PCD header: field type '" + t + "' in TYPE";
+        return false;
+      }
+  } else if (key == "COUNT") {
+    header.counts = values.size();
+    if (!nonNegativeIntegers(values, header.count_values)) {
+      problem = "invalid PCD header: bad COUNT line";
+      return false;
+    }
+  } else if (key == "WIDTH" || key == "HEIGHT" || key == "POINTS") {
+    std::vector<long long> numbers;
+    if (values.size() != 1 || !nonNegativeIntegers(values, numbers)) {
+      problem = "invalid PCD header: bad " + key + " line";
+      return false;
+    }
+    if (key == "WIDTH") {
+      header.width = numbers[0];
+      header.have_width = true;
+    } else if (key == "HEIGHT") {
+      header.height = numbers[0];
+    } else {
+      header.points = numbers[0];
+      header.have_points = true;
+    }
+  } else {
+    problem = "not a PCD file (unexpected header line '" + line.substr(0, 40) + "')";
+    return false;
+  }
+  return true;
+}
+
+/** \brief The DATA line ends the header: the lines before it must agree, its type must
+ * be known, and the file (`file_size` bytes, the header `consumed` of them) must be
+ * long enough for the announced points. */
+bool
+checkDataLine(const PcdHeader& header,
+              const std::vector<std::string>& values,
+              std::uintmax_t consumed,
+              std::uintmax_t file_size,
+              std::string& problem)
+{
+  const std::size_t fields = header.fields;
+  if (fields == 0) {
+    problem = "invalid PCD header: no FIELDS line";
+    return false;
+  }
+  if (header.sizes != fields || header.types != fields ||
+      (header.counts != 0 && header.counts != fields)) {
+    problem = "invalid PCD header: FIELDS, SIZE, TYPE and COUNT disagree";
+    return false;
+  }
+  if (!header.have_width || !header.have_points) {
+    problem = std::string("invalid PCD header: no ") +
+              (header.have_width ? "POINTS" : "WIDTH") + " line";
+    return false;
+  }
+  if (header.width * header.height != header.points) {
+    problem = "invalid PCD header: WIDTH x HEIGHT differs from POINTS";
+    return false;
+  }
+  const std::string type = values.empty() ? std::string() : values[0];
+  if (type != "ascii" && type != "binary" && type != "binary_compressed") {
+    problem = "invalid PCD header: unknown DATA type '" + type + "'";
+    return false;
+  }
+  if (type == "binary") {
+    std::uintmax_t point_bytes = 0;
+    for (std::size_t f = 0; f < fields; ++f)
+      point_bytes +=
+        static_cast<std::uintmax_t>(header.size_values[f]) *
+        static_cast<std::uintmax_t>(header.counts ? header.count_values[f] : 1);
+    if (consumed + point_bytes * static_cast<std::uintmax_t>(header.points) >
+        file_size) {
+      problem = "PCD data is truncated (the header announces " +
+                std::to_string(header.points) + " points)";
+      return false;
+    }
+  } else if (type == "binary_compressed" && header.points > 0 &&
+             consumed + 8 > file_size) {
+    problem = "PCD data is truncated (no compressed block)";
+    return false;
+  }
+  return true;
+}
+
+} // namespace
+
+bool
+checkPcdHeader(const std::string& path, std::uintmax_t file_size, std::string& problem)
+{
+  std::ifstream in(path, std::ios::binary);
+  std::string line;
+  PcdHeader header;
+  std::uintmax_t consumed = 0;
+  for (int line_number = 1; line_number <= 64 && std::getline(in, line);
+       ++line_number) {
+    consumed += line.size() + 1;
+    if (!line.empty() && line.back() == '\r')
+      line.pop_back();
+    if (line.empty() || line[0] == '#')
+      continue;
+    for (char c : line)
+      if (c != '\t' && !std::isprint(static_cast<unsigned char>(c))) {
+        problem = "not a PCD file (binary data in the header, line " +
+                  std::to_string(line_number) + ")";
+        return false;
+      }
+    std::istringstream words(line);
+    std::string key;
+    words >> key;
+    std::vector<std::string> values;
+    for (std::string w; words >> w;)
+      values.push_back(w);
+    if (key == "DATA")
+      return checkDataLine(header, values, consumed, file_size, problem);
+    if (!readHeaderLine(line, key, values, header, problem))
+      return false;
+  }
+  problem = "not a PCD file (no DATA line in the header)";
+  return false;
+}
+
+bool
+loadCloud(const std::string& path,
+          pcl::PCLPointCloud2& cloud,
+          Eigen::Vector4f& origin,
+          Eigen::Quaternionf& orientation,
+          std::string& error)
+{
+  origin = Eigen::Vector4f::Zero();
+  orientation = Eigen::Quaternionf::Identity();
+  const std::string ext = lowerExtension(path);
+  if (ext != ".pcd" && ext != ".ply") {
+    error = "'" + path + "': unknown extension '" + ext +
+            "' (expected .pcd, .ply, .obj or .off)";
+    return false;
+  }
+  std::error_code ec;
+  const fs::file_status status = fs::status(path, ec);
+  if (!fs::exists(status)) {
+    error = "'" + path + "': no such file";
+    return false;
+  }
+  if (fs::is_directory(status)) {
+    error = "'" + path + "': is a directory";
+    return false;
+  }
+  if (!std::ifstream(path, std::ios::binary)) {
+    error = "'" + path + "': cannot open: " + std::strerror(errno);
+    return false;
+  }
+  const std::uintmax_t size = fs::file_size(path, ec);
+  if (ec || size == 0) {
+    error = "'" + path + "': file is empty";
+    return false;
+  }
+  if (ext == ".pcd") {
+    std::string problem;
+    if (!checkPcdHeader(path, size, problem)) {
+      error = "'" + path + "': " + problem;
+      return false;
+    }
+    if (quietly(
+          [&] { return pcl::io::loadPCDFile(path, cloud, origin, orientation); }) < 0) {
+      error = "'" + path + "': PCD data is truncated or corrupt";
+      return false;
+    }
+  } else {
+    if (quietly(
+          [&] { return pcl::io::loadPLYFile(path, cloud, origin, orientation); }) < 0) {
+      error =
+        "'" + path + "': not a valid PLY file (header or data could not be parsed)";
+      return false;
+    }
+  }
+  return true;
+}
+
+bool
+hasXYZ(const pcl::PCLPointCloud2& cloud, std::string& problem)
+{
+  for (const char* name : {"x", "y", "z"}) {
+    const int index = pcl::getFieldIndex(cloud, name);
+    if (index < 0) {
+      problem = std::string("no '") + name +
+                "' field (fields: " + pcl::getFieldsList(cloud) + ")";
+      return false;
+    }
+    if (cloud.fields[static_cast<std::size_t>(index)].count != 1) {
+      problem = std::string("field '") + name + "' is not a scalar";
+      return false;
+    }
+  }
+  return true;
+}
+
+double
+readScalar(const std::uint8_t* p, std::uint8_t datatype)
+{
+  auto get = [p](auto zero) {
+    decltype(zero) v;
+    std::memcpy(&v, p, sizeof(v));
+    return static_cast<double>(v);
+  };
+  switch (datatype) {
+  case pcl::PCLPointField::INT8:
+    return get(std::int8_t{});
+  case pcl::PCLPointField::UINT8:
+    return get(std::uint8_t{});
+  case pcl::PCLPointField::INT16:
+    return get(std::int16_t{});
+  case pcl::PCLPointField::UINT16:
+    return get(std::uint16_t{});
+  case pcl::PCLPointField::INT32:
+    return get(std::int32_t{});
+  case pcl::PCLPointField::UINT32:
+    return get(std::uint32_t{});
+  case pcl::PCLPointField::FLOAT32:
+    return get(float{});
+  case pcl::PCLPointField::FLOAT64:
+    return get(double{});
+  default:
+    return std::numeric_limits<double>::quiet_NaN();
+  }
+}
+
+void
+toXYZ(const pcl::PCLPointCloud2& in, pcl::PointCloud<pcl::PointXYZ>& out)
+{
+  const pcl::PCLPointField& fx =
+    in.fields[static_cast<std::size_t>(pcl::getFieldIndex(in, "x"))];
+  const pcl::PCLPointField& fy =
+    in.fields[static_cast<std::size_t>(pcl::getFieldIndex(in, "y"))];
+  const pcl::PCLPointField& fz =
+    in.fields[static_cast<std::size_t>(pcl::getFieldIndex(in, "z"))];
+  if (fx.datatype == pcl::PCLPointField::FLOAT32 &&
+      fy.datatype == pcl::PCLPointField::FLOAT32 &&
+      fz.datatype == pcl::PCLPointField::FLOAT32) {
+    pcl::fromPCLPointCloud2(in, out);
+    return;
+  }
+  const std::size_t n = static_cast<std::size_t>(in.width) * in.height;
+  out.resize(n);
+  out.width = in.width;
+  out.height = in.height;
+  out.is_dense = true;
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::uint8_t* base = in.data.data() + i * in.point_step;
+    pcl::PointXYZ& p = out[i];
+    p.x = static_cast<float>(readScalar(base + fx.offset, fx.datatype));
+    p.y = static_cast<float>(readScalar(base + fy.offset, fy.datatype));
+    p.z = static_cast<float>(readScalar(base + fz.offset, fz.datatype));
+    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+      out.is_dense = false;
+  }
+}
+
+pcl::PCLPointCloud2
+withoutFields(const pcl::PCLPointCloud2& in, const std::set<std::string>& names)
+{
+  bool any = false;
+  for (const auto& f : in.fields)
+    any = any || names.count(f.name) > 0;
+  if (!any)
+    return in;
+
+  std::vector<pcl::PCLPointField> kept;
+  for (const auto& f : in.fields)
+    if (!names.count(f.name) && f.name != "_")
+      kept.push_back(f);
+  std::sort(kept.begin(), kept.end(),
+            [](const pcl::PCLPointField& a, const pcl::PCLPointField& b) {
+              return a.offset < b.offset;
+            });
+
+  pcl::PCLPointCloud2 out;
+  out.header = in.header;
+  out.width = in.width;
+  out.height = in.height;
+  out.is_bigendian = in.is_bigendian;
+  out.is_dense = in.is_dense;
+  std::vector<std::uint32_t> source_offsets, sizes;
+  std::uint32_t step = 0;
+  for (auto f : kept) {
+    const std::uint32_t size =
+      f.count * static_cast<std::uint32_t>(pcl::getFieldSize(f.datatype));
+    source_offsets.push_back(f.offset);
+    sizes.push_back(size);
+    f.offset = step;
+    out.fields.push_back(f);
+    step += size;
+  }
+  out.point_step = step;
+  out.row_step = step * out.width;
+  const std::size_t n = static_cast<std::size_t>(in.width) * in.height;
+  out.data.resize(n * step);
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::uint8_t* src = in.data.data() + i * in.point_step;
+    std::uint8_t* dst = out.data.data() + i * step;
+    for (std::size_t f = 0; f < out.fields.size(); ++f)
+      std::memcpy(dst + out.fields[f].offset, src + source_offsets[f], sizes[f]);
+  }
+  return out;
+}
+
+} // namespace visfeat_tools

@@ -1,0 +1,57 @@
+// Cloud input of the visfeat tools (not installed, not public API): .pcd and .ply files
+// loaded safely into pcl::PCLPointCloud2 with every field kept, x y z of any numeric
+// type, and fields removed before new ones of the same names are added.
+#pragma once
+
+#include <pcl/PCLPointCloud2.h>
+#include <pcl/point_cloud.h>
+#include <pcl/point_types.h>
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include <cstdint>
+#include <set>
+#include <string>
+
+namespace visfeat_tools {
+
+/** \brief Validate a PCD header before PCL reads the file.
+ *
+ * PCL 1.13's PCDReader dereferences garbage when the header has no FIELDS line or is
+ * not a PCD header at all (a text file or an empty file renamed .pcd crashes it), so
+ * the header is checked first: the keywords FIELDS, SIZE, TYPE, WIDTH, POINTS and
+ * DATA, consistent counts, and for DATA binary a file long enough for the points.
+ * `file_size` is the size of the file in bytes. On failure `problem` says what is
+ * wrong (without the file name). */
+bool
+checkPcdHeader(const std::string& path, std::uintmax_t file_size, std::string& problem);
+
+/** \brief Load a .pcd or .ply file (extension checked case-insensitively) into a
+ * PCLPointCloud2, keeping every field. On failure `error` is one line naming the file
+ * and the problem. origin / orientation are the PCD viewpoint (identity for PLY). */
+bool loadCloud(const std::string& path,
+               pcl::PCLPointCloud2& cloud,
+               Eigen::Vector4f& origin,
+               Eigen::Quaternionf& orientation,
+               std::string& error);
+
+/** \brief Check that a cloud has scalar numeric x, y, z fields; `problem` names the
+ * first one missing or not a scalar. */
+bool hasXYZ(const pcl::PCLPointCloud2& cloud, std::string& problem);
+
+/** \brief Read one field value at `p` as a double, whatever its numeric type
+ * (pcl::PCLPointField::INT8 ... FLOAT64); NaN for an unknown datatype. */
+double readScalar(const std::uint8_t* p, std::uint8_t datatype);
+
+/** \brief x, y, z of a PCLPointCloud2 as PointXYZ: fromPCLPointCloud2 when they are
+ * float (the usual case), else converted from whatever numeric type they have (PLY
+ * files often store double). Call hasXYZ() first. */
+void toXYZ(const pcl::PCLPointCloud2& in, pcl::PointCloud<pcl::PointXYZ>& out);
+
+/** \brief A copy of `in` without the named fields, the others packed in offset order
+ * (padding fields "_" dropped too). Returns `in` unchanged when none is present. */
+pcl::PCLPointCloud2 withoutFields(const pcl::PCLPointCloud2& in,
+                                  const std::set<std::string>& names);
+
+} // namespace visfeat_tools

@@ -1,0 +1,176 @@
+// Mesh input of the visfeat tools; see mesh_input.h.
+
+#include "common/mesh_input.h"
+
+#include "common/arguments.h"
+#include "common/cloud_input.h"
+#include "common/tool_main.h"
+
+#include <visfeat/core/common/error.h>
+
+#include <pcl/common/io.h>
+#include <pcl/conversions.h>
+#include <pcl/io/obj_io.h>
+#include <pcl/io/ply_io.h>
+#include <pcl/point_cloud.h>
+#include <pcl/point_types.h>
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+#include <vector>
+
+namespace visfeat_tools {
+
+bool
+isMeshFile(const std::string& path)
+{
+  const std::string ext = lowerExtension(path);
+  if (ext == ".obj" || ext == ".off")
+    return true;
+  if (ext != ".ply")
+    return false;
+  std::ifstream in(path, std::ios::binary);
+  std::string line;
+  for (int n = 0; n < 256 && std::getline(in, line); ++n) {
+    if (!line.empty() && line.back() == '\r')
+      line.pop_back();
+    if (line == "end_header")
+      break;
+    std::istringstream words(line);
+    std::string keyword, element;
+    long long count = 0;
+    if (words >> keyword >> element >> count && keyword == "element" &&
+        element == "face")
+      return count > 0;
+  }
+  return false;
+}
+
+bool
+toSurfaceMesh(const pcl::PolygonMesh& in, visfeat::SurfaceMesh& out, std::string& error)
+{
+  std::string problem;
+  if (!hasXYZ(in.cloud, problem)) {
+    error = "the mesh's vertices have " + problem;
+    return false;
+  }
+  const std::size_t n = static_cast<std::size_t>(in.cloud.width) * in.cloud.height;
+  if (in.cloud.data.size() < n * in.cloud.point_step) {
+    error = "the mesh's vertex data is truncated";
+    return false;
+  }
+  const pcl::PCLPointField* f[3];
+  for (int a = 0; a < 3; ++a)
+    f[a] = &in.cloud.fields[static_cast<std::size_t>(
+      pcl::getFieldIndex(in.cloud, std::string(1, static_cast<char>('x' + a))))];
+  out.vertices.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::uint8_t* base = in.cloud.data.data() + i * in.cloud.point_step;
+    for (int a = 0; a < 3; ++a)
+      out.vertices[i][a] = readScalar(base + f[a]->offset, f[a]->datatype);
+  }
+  out.triangles.clear();
+  for (std::size_t p = 0; p < in.polygons.size(); ++p) {
+    const auto& v = in.polygons[p].vertices;
+    if (v.size() < 3) {
+      error = "face " + std::to_string(p) + " has " + std::to_string(v.size()) +
+              " vertices (at least 3 needed)";
+      return false;
+    }
+    for (const auto index : v)
+      if (index < 0 || static_cast<std::size_t>(index) >= n) {
+        error = "face " + std::to_string(p) + ": vertex index " +
+                std::to_string(index) + " out of range (" + std::to_string(n) +
+                " vertices, counting from 0)";
+        return false;
+      }
+    auto at = [&v](std::size_t i) { return static_cast<std::uint32_t>(v[i]); };
+    for (std::size_t i = 1; i + 1 < v.size(); ++i)
+      out.triangles.push_back({at(0), at(i), at(i + 1)});
+  }
+  return true;
+}
+
+bool
+loadMesh(const std::string& path, visfeat::SurfaceMesh& mesh, std::string& error)
+{
+  const std::string ext = lowerExtension(path);
+  if (ext == ".off") {
+    std::ifstream in(path, std::ios::binary);
+    try {
+      mesh = visfeat::readOff(in);
+    } catch (const visfeat::Error& e) {
+      error = "'" + path + "': " + e.what();
+      return false;
+    }
+    return true;
+  }
+  pcl::PolygonMesh polygons;
+  const int rc = quietly([&] {
+    return ext == ".ply" ? pcl::io::loadPLYFile(path, polygons)
+                         : pcl::io::loadOBJFile(path, polygons);
+  });
+  const std::string format = ext == ".ply" ? "PLY" : "OBJ";
+  if (rc < 0) {
+    error = "'" + path + "': not a valid " + format +
+            " mesh (header or data could not be parsed)";
+    return false;
+  }
+  if (!toSurfaceMesh(polygons, mesh, error)) {
+    error = "'" + path + "': " + format + " mesh: " + error;
+    return false;
+  }
+  return true;
+}
+
+bool
+loadMeshAsCloud(const std::string& path,
+                const MeshDensity& density,
+                pcl::PCLPointCloud2& cloud,
+                std::string& summary,
+                std::string& error)
+{
+  visfeat::SurfaceMesh mesh;
+  if (!loadMesh(path, mesh, error))
+    return false;
+  try {
+    visfeat::validateMesh(mesh);
+    if (mesh.triangles.empty())
+      throw visfeat::Error("the mesh has no faces");
+    const double area = visfeat::meshArea(mesh);
+    if (!(area > 0.0))
+      throw visfeat::Error("the mesh has zero area (all " +
+                           std::to_string(mesh.triangles.size()) +
+                           " triangles are degenerate)");
+    const std::size_t count =
+      density.spacing > 0.0
+        ? visfeat::samplesForSpacing(area, density.spacing, kMaxMeshPoints)
+        : density.points;
+    const std::vector<visfeat::MeshSample> samples =
+      visfeat::sampleMesh(mesh, count, kMeshSeed);
+    pcl::PointCloud<pcl::PointXYZ> xyz;
+    xyz.resize(samples.size());
+    for (std::size_t i = 0; i < samples.size(); ++i)
+      xyz[i].getVector3fMap() = samples[i].position;
+    xyz.width = static_cast<std::uint32_t>(xyz.size());
+    xyz.height = 1;
+    xyz.is_dense = true;
+    pcl::toPCLPointCloud2(xyz, cloud);
+    std::ostringstream s;
+    s << "Sampled " << samples.size() << " points from " << mesh.triangles.size()
+      << " triangles (" << mesh.vertices.size() << " vertices, area " << area;
+    if (density.spacing > 0.0)
+      s << ", mean spacing " << density.spacing;
+    else
+      s << ", mean spacing " << std::sqrt(area / static_cast<double>(count));
+    s << "; area-weighted uniform, seed " << kMeshSeed << ")";
+    summary = s.str();
+  } catch (const visfeat::Error& e) {
+    error = "'" + path + "': " + e.what();
+    return false;
+  }
+  return true;
+}
+
+} // namespace visfeat_tools

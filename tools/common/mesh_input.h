@@ -1,0 +1,55 @@
+// Mesh input of the visfeat tools (not installed, not public API): .ply files with
+// faces, .obj and .off files read into a visfeat::SurfaceMesh and sampled to a cloud.
+#pragma once
+
+#include <visfeat/core/mesh/mesh_sampling.h>
+
+#include <pcl/PCLPointCloud2.h>
+#include <pcl/PolygonMesh.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+
+namespace visfeat_tools {
+
+/** \brief Seed of the mesh sampling: fixed, so a mesh always gives the same cloud. */
+constexpr std::uint64_t kMeshSeed = 1;
+
+/** \brief The most points a mesh is sampled to. */
+constexpr std::size_t kMaxMeshPoints = 1000000000;
+
+/** \brief How densely to sample a mesh: a point count, or a mean spacing (world units)
+ * when spacing > 0. */
+struct MeshDensity
+{
+  std::size_t points = 1000000;
+  double spacing = 0.0;
+};
+
+/** \brief True when `path` is a mesh to sample: .obj, .off, or a .ply whose header
+ * declares at least one face. A .ply that cannot be read stays a "cloud", so the cloud
+ * reader reports what is wrong with it. */
+bool isMeshFile(const std::string& path);
+
+/** \brief A pcl::PolygonMesh as a visfeat::SurfaceMesh: vertex coordinates whatever
+ * their numeric type, polygons fanned from their first vertex. False + `error` (without
+ * the file name) for vertices without x y z, truncated vertex data, a polygon of fewer
+ * than 3 vertices or a vertex index out of range. */
+bool toSurfaceMesh(const pcl::PolygonMesh& in,
+                   visfeat::SurfaceMesh& out,
+                   std::string& error);
+
+/** \brief Read a mesh file (.off by visfeat::readOff, .ply and .obj by PCL). On
+ * failure `error` is one line naming the file. */
+bool loadMesh(const std::string& path, visfeat::SurfaceMesh& mesh, std::string& error);
+
+/** \brief Load a mesh and sample it (area-weighted, seed kMeshSeed) into an x y z
+ * cloud. `summary` says what was done, for the tool to print. */
+bool loadMeshAsCloud(const std::string& path,
+                     const MeshDensity& density,
+                     pcl::PCLPointCloud2& cloud,
+                     std::string& summary,
+                     std::string& error);
+
+} // namespace visfeat_tools

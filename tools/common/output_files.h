@@ -1,0 +1,27 @@
+// Output files of the visfeat tools (not installed, not public API): every output is
+// written to a temporary name next to it and renamed into place only when all the
+// outputs of a run are complete, so a failure leaves no partial file.
+#pragma once
+
+#include <string>
+
+namespace visfeat_tools {
+
+/** \brief The temporary name an output is written to before being renamed into place:
+ * `path` + ".tmp". */
+std::string temporaryPath(const std::string& path);
+
+/** \brief Check, before any work, that `path` can be created: its directory exists and
+ * is writable, and `path` is not a directory. Creates the temporary file and removes
+ * it again unless it existed before. On failure `error` is one line. */
+bool checkWritable(const std::string& path, std::string& error);
+
+/** \brief Move the finished temporary file into place (same directory: atomic). On
+ * failure the temporary file is removed and `error` is one line. */
+bool commitOutput(const std::string& path, std::string& error);
+
+/** \brief Remove a temporary file left by a failed write (nothing when there is none).
+ */
+void discardOutput(const std::string& path);
+
+} // namespace visfeat_tools

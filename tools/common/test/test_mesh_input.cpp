@@ -1,0 +1,191 @@
+// Unit tests of common/mesh_input.h: which files are meshes, PolygonMesh conversion
+// and its errors, reading and sampling meshes.
+
+#include "common/mesh_input.h"
+
+#include "temp_dir.h"
+
+#include <pcl/common/io.h>
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cstdint>
+#include <cstring>
+#include <string>
+#include <vector>
+
+namespace vt = visfeat_tools;
+
+namespace {
+
+using MeshInput = vt::test::TempDirTest;
+
+const char* const kTetrahedronOff = "OFF\n"
+                                    "4 4 0\n"
+                                    "0 0 0\n"
+                                    "1 0 0\n"
+                                    "0 1 0\n"
+                                    "0 0 1\n"
+                                    "3 0 2 1\n"
+                                    "3 0 1 3\n"
+                                    "3 0 3 2\n"
+                                    "3 1 2 3\n";
+
+std::string
+plyHeader(const std::string& elements)
+{
+  return "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float "
+         "y\nproperty float z\n" +
+         elements + "end_header\n";
+}
+
+TEST_F(MeshInput, IsMeshFileByExtensionAndPlyFaces)
+{
+  EXPECT_TRUE(vt::isMeshFile(path("absent.obj")));
+  EXPECT_TRUE(vt::isMeshFile(path("absent.OFF")));
+  EXPECT_FALSE(vt::isMeshFile(path("absent.pcd")));
+  EXPECT_FALSE(vt::isMeshFile(path("absent.ply"))) << "unreadable: left to the reader";
+  EXPECT_TRUE(vt::isMeshFile(
+    write("faces.ply",
+          plyHeader("element face 2\nproperty list uchar int vertex_indices\n"))));
+  EXPECT_FALSE(vt::isMeshFile(
+    write("no_faces.ply",
+          plyHeader("element face 0\nproperty list uchar int vertex_indices\n"))));
+  EXPECT_FALSE(vt::isMeshFile(write("cloud.ply", plyHeader(""))));
+  EXPECT_FALSE(
+    vt::isMeshFile(write("after_header.ply", plyHeader("") + "element face 2\n")));
+}
+
+/** \brief A PolygonMesh of a unit square in z = 0 with double x y z. */
+pcl::PolygonMesh
+square()
+{
+  pcl::PolygonMesh mesh;
+  pcl::PCLPointCloud2& c = mesh.cloud;
+  for (int a = 0; a < 3; ++a) {
+    pcl::PCLPointField f;
+    f.name = std::string(1, static_cast<char>('x' + a));
+    f.offset = static_cast<std::uint32_t>(8 * a);
+    f.datatype = pcl::PCLPointField::FLOAT64;
+    f.count = 1;
+    c.fields.push_back(f);
+  }
+  c.point_step = 24;
+  c.width = 4;
+  c.height = 1;
+  c.row_step = 96;
+  const std::array<std::array<double, 3>, 4> corners{
+    {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}};
+  c.data.resize(96);
+  std::memcpy(c.data.data(), corners.data(), 96);
+  pcl::Vertices quad;
+  quad.vertices = {0, 1, 2, 3};
+  mesh.polygons.push_back(quad);
+  return mesh;
+}
+
+TEST(ToSurfaceMesh, FansPolygonsAndReadsDoubleVertices)
+{
+  visfeat::SurfaceMesh out;
+  std::string error;
+  ASSERT_TRUE(vt::toSurfaceMesh(square(), out, error)) << error;
+  ASSERT_EQ(out.vertices.size(), 4u);
+  EXPECT_EQ(out.vertices[2], Eigen::Vector3d(1, 1, 0));
+  using Triangle = std::array<std::uint32_t, 3>;
+  EXPECT_EQ(out.triangles, (std::vector<Triangle>{{0, 1, 2}, {0, 2, 3}}));
+}
+
+TEST(ToSurfaceMesh, NamesWhatIsWrong)
+{
+  visfeat::SurfaceMesh out;
+  std::string error;
+
+  pcl::PolygonMesh no_z = square();
+  no_z.cloud.fields.pop_back();
+  EXPECT_FALSE(vt::toSurfaceMesh(no_z, out, error));
+  EXPECT_EQ(error, "the mesh's vertices have no 'z' field (fields: x y)");
+
+  pcl::PolygonMesh short_data = square();
+  short_data.cloud.data.resize(95);
+  EXPECT_FALSE(vt::toSurfaceMesh(short_data, out, error));
+  EXPECT_EQ(error, "the mesh's vertex data is truncated");
+
+  pcl::PolygonMesh two = square();
+  two.polygons.push_back(pcl::Vertices());
+  two.polygons.back().vertices = {0, 1};
+  EXPECT_FALSE(vt::toSurfaceMesh(two, out, error));
+  EXPECT_EQ(error, "face 1 has 2 vertices (at least 3 needed)");
+
+  pcl::PolygonMesh far = square();
+  far.polygons[0].vertices[3] = 4;
+  EXPECT_FALSE(vt::toSurfaceMesh(far, out, error));
+  EXPECT_EQ(error, "face 0: vertex index 4 out of range (4 vertices, counting from 0)");
+}
+
+TEST_F(MeshInput, LoadsAnOffMesh)
+{
+  visfeat::SurfaceMesh mesh;
+  std::string error;
+  ASSERT_TRUE(vt::loadMesh(write("t.off", kTetrahedronOff), mesh, error)) << error;
+  EXPECT_EQ(mesh.vertices.size(), 4u);
+  EXPECT_EQ(mesh.triangles.size(), 4u);
+  EXPECT_EQ(mesh.vertices[3], Eigen::Vector3d(0, 0, 1));
+}
+
+TEST_F(MeshInput, LoadErrorsNameTheFile)
+{
+  visfeat::SurfaceMesh mesh;
+  std::string error;
+  const std::string off = write("bad.off", "COFF\n");
+  EXPECT_FALSE(vt::loadMesh(off, mesh, error));
+  EXPECT_EQ(error.rfind("'" + off + "': OFF", 0), 0u) << error;
+
+  const std::string ply = write("bad.ply", "ply\nformat nonsense 1.0\nend_header\n");
+  EXPECT_FALSE(vt::loadMesh(ply, mesh, error));
+  EXPECT_EQ(error,
+            "'" + ply + "': not a valid PLY mesh (header or data could not be parsed)");
+}
+
+TEST_F(MeshInput, SamplesAMeshIntoACloud)
+{
+  vt::MeshDensity density;
+  EXPECT_EQ(density.points, 1000000u) << "the documented default";
+  density.points = 1000;
+  pcl::PCLPointCloud2 cloud;
+  std::string summary, error;
+  ASSERT_TRUE(vt::loadMeshAsCloud(write("t.off", kTetrahedronOff), density, cloud,
+                                  summary, error))
+    << error;
+  EXPECT_EQ(cloud.width * cloud.height, 1000u);
+  EXPECT_EQ(pcl::getFieldsList(cloud), "x y z");
+  EXPECT_EQ(summary.rfind("Sampled 1000 points from 4 triangles (4 vertices, area ", 0),
+            0u)
+    << summary;
+  const std::string tail = "; area-weighted uniform, seed 1)";
+  EXPECT_EQ(summary.substr(summary.size() - tail.size()), tail) << summary;
+
+  // The same mesh gives the same cloud.
+  pcl::PCLPointCloud2 again;
+  ASSERT_TRUE(vt::loadMeshAsCloud(path("t.off"), density, again, summary, error));
+  EXPECT_EQ(again.data, cloud.data);
+}
+
+TEST_F(MeshInput, RefusesMeshesWithoutArea)
+{
+  vt::MeshDensity density;
+  density.points = 10;
+  pcl::PCLPointCloud2 cloud;
+  std::string summary, error;
+  const std::string none = write("none.off", "OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n");
+  EXPECT_FALSE(vt::loadMeshAsCloud(none, density, cloud, summary, error));
+  EXPECT_EQ(error, "'" + none + "': the mesh has no faces");
+  const std::string flat =
+    write("flat.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n2 0 0\n3 0 1 2\n");
+  EXPECT_FALSE(vt::loadMeshAsCloud(flat, density, cloud, summary, error));
+  EXPECT_EQ(error, "'" + flat +
+                     "': the mesh has zero area (all 1 triangles are "
+                     "degenerate)");
+}
+
+} // namespace

@@ -1,0 +1,180 @@
+// Where the visfeat tool's pictures look from; see picture_camera.h.
+
+#include "picture/picture_camera.h"
+
+#include <visfeat/core/common/feature_class.h>
+
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <map>
+#include <utility>
+#include <vector>
+
+namespace visfeat_tools {
+
+namespace {
+
+/** \brief The default direction the camera looks from (see chooseDirection()). */
+const Eigen::Vector3d kDefaultDirection = Eigen::Vector3d(1.0, 0.78, 0.62).normalized();
+
+} // namespace
+
+Eigen::Vector3d
+chooseDirection(const pcl::PointCloud<visfeat::PointVisibility>& cloud)
+{
+  struct Moments
+  {
+    double n = 0.0;
+    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+    Eigen::Matrix3d outer = Eigen::Matrix3d::Zero();
+  };
+  std::map<std::uint32_t, Moments> faces;
+  for (const auto& p : cloud) {
+    if (p.feature_class != static_cast<std::uint8_t>(visfeat::FeatureClass::kFace) ||
+        !std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+      continue;
+    Moments& m = faces[p.label];
+    const Eigen::Vector3d q(p.x, p.y, p.z);
+    m.n += 1.0;
+    m.sum += q;
+    m.outer += q * q.transpose();
+  }
+  std::vector<std::pair<Eigen::Vector3d, double>> normals; // normal, weight
+  for (const auto& [label, m] : faces) {
+    (void)label;
+    if (m.n < 10.0)
+      continue;
+    const Eigen::Vector3d mean = m.sum / m.n;
+    const Eigen::Matrix3d cov = m.outer / m.n - mean * mean.transpose();
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(cov);
+    if (eig.info() != Eigen::Success ||
+        eig.eigenvalues()(0) > 0.01 * eig.eigenvalues()(1))
+      continue;
+    normals.emplace_back(eig.eigenvectors().col(0), m.n);
+  }
+  if (normals.empty())
+    return kDefaultDirection;
+
+  // Directions spread evenly over the sphere (a Fibonacci lattice).
+  constexpr int kCandidates = 2000;
+  std::vector<Eigen::Vector3d> candidates;
+  std::vector<double> scores;
+  double best = 0.0;
+  for (int i = 0; i < kCandidates; ++i) {
+    const double z = 1.0 - (2.0 * i + 1.0) / kCandidates;
+    const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
+    const double phi = i * M_PI * (3.0 - std::sqrt(5.0));
+    const Eigen::Vector3d d(r * std::cos(phi), r * std::sin(phi), z);
+    double score = 0.0;
+    for (const auto& [n, w] : normals)
+      score += w * std::abs(n.dot(d));
+    candidates.push_back(d);
+    scores.push_back(score);
+    best = std::max(best, score);
+  }
+  Eigen::Vector3d chosen = kDefaultDirection;
+  double closest = -2.0;
+  for (std::size_t i = 0; i < candidates.size(); ++i)
+    if (scores[i] >= 0.97 * best && candidates[i].dot(kDefaultDirection) > closest) {
+      closest = candidates[i].dot(kDefaultDirection);
+      chosen = candidates[i];
+    }
+  return chosen.normalized();
+}
+
+View
+fitView(const pcl::PointCloud<visfeat::PointVisibility>& cloud,
+        const Eigen::Vector3d& lo,
+        const Eigen::Vector3d& hi,
+        const Eigen::Vector3d& direction,
+        int width,
+        int height,
+        double right_reserve)
+{
+  View v;
+  const Eigen::Vector3d d = direction.normalized();
+  const Eigen::Vector3d centre = 0.5 * (lo + hi);
+
+  // Spread of the points in the image plane.
+  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+  double n = 0.0;
+  for (const auto& p : cloud) {
+    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+      continue;
+    Eigen::Vector3d q = Eigen::Vector3d(p.x, p.y, p.z) - centre;
+    q -= q.dot(d) * d;
+    cov += q * q.transpose();
+    n += 1.0;
+  }
+  Eigen::Vector3d up;
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(cov / std::max(n, 1.0));
+  // eigenvalues ascending: 0 ~ along d, 1 minor, 2 major in-plane axis.
+  if (eig.info() == Eigen::Success &&
+      eig.eigenvalues()(2) > 1.3 * eig.eigenvalues()(1)) {
+    up = d.cross(eig.eigenvectors().col(2)).normalized(); // major axis horizontal
+  } else {
+    const Eigen::Vector3d world_up =
+      std::abs(d.z()) < 0.95 ? Eigen::Vector3d::UnitZ() : Eigen::Vector3d::UnitY();
+    up = (world_up - world_up.dot(d) * d).normalized();
+  }
+  if (up.z() < 0.0)
+    up = -up;
+  const Eigen::Vector3d right = up.cross(d);
+
+  // Centre the projected box, then the nearest distance that keeps every point inside
+  // the frame (perspective: x / (D - z) <= tan of the half angle).
+  Eigen::Vector2d min2 = Eigen::Vector2d::Constant(std::numeric_limits<double>::max());
+  Eigen::Vector2d max2 = -min2;
+  for (const auto& p : cloud) {
+    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+      continue;
+    const Eigen::Vector3d q = Eigen::Vector3d(p.x, p.y, p.z) - centre;
+    const Eigen::Vector2d xy(q.dot(right), q.dot(up));
+    min2 = min2.cwiseMin(xy);
+    max2 = max2.cwiseMax(xy);
+  }
+  const Eigen::Vector2d mid = 0.5 * (min2 + max2);
+  v.focal = centre + mid.x() * right + mid.y() * up;
+  constexpr double kFill = 0.86; // of the half width / height
+  const double half_v = 0.5 * v.view_angle_deg * M_PI / 180.0;
+  const double tan_v = std::tan(half_v) * kFill;
+  // The object fills the left (1 - right_reserve) of the frame: its centre appears at
+  // -right_reserve in normalised [-1, 1] coordinates (window centre +right_reserve).
+  const double tan_h =
+    std::tan(half_v) * width / height * kFill * (1.0 - right_reserve);
+  v.window_center_x = right_reserve;
+  double distance = 1e-9;
+  for (const auto& p : cloud) {
+    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+      continue;
+    const Eigen::Vector3d q = Eigen::Vector3d(p.x, p.y, p.z) - v.focal;
+    const double z = q.dot(d);
+    distance = std::max(distance, z + std::abs(q.dot(right)) / tan_h);
+    distance = std::max(distance, z + std::abs(q.dot(up)) / tan_v);
+  }
+  distance = std::max(distance, 1e-6 * (hi - lo).norm());
+  v.position = v.focal + distance * d;
+  v.up = up;
+  v.pixels_per_unit = height / (2.0 * distance * std::tan(half_v));
+  return v;
+}
+
+float
+pointSize(double cell_size,
+          std::size_t band_cells,
+          std::size_t points,
+          const View& view)
+{
+  if (points == 0 || cell_size <= 0.0 || band_cells == 0)
+    return 2.f;
+  const double spacing =
+    cell_size * std::sqrt(static_cast<double>(band_cells) / points);
+  const double pixels = 2.2 * spacing * view.pixels_per_unit;
+  return static_cast<float>(std::clamp(std::round(pixels), 2.0, 10.0));
+}
+
+} // namespace visfeat_tools

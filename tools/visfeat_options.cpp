@@ -1,0 +1,253 @@
+// The options of the visfeat tool; see visfeat_options.h.
+
+#include "visfeat_options.h"
+
+#include "common/automatic_resolution.h"
+#include "common/output_files.h"
+
+#include <visfeat/core/grid/grid_spec.h>
+#include <visfeat/core/visibility/visibility_map.h>
+#include <visfeat/visibility_feature_estimation.h>
+
+#include <pcl/console/print.h>
+
+#include <limits>
+#include <vector>
+
+using namespace pcl::console;
+
+namespace visfeat_tools {
+
+const std::set<std::string>&
+valueOptions()
+{
+  static const std::set<std::string> names{
+    "-resolution",      "-max_radius", "-min_radius", "-vertex_cells",
+    "-dimensionality",  "-opacity",    "-smooth",     "-threads",
+    "-memory_limit_mb", "-voxels",     "-graph",      "-mesh_points",
+    "-mesh_spacing",    "-png",        "-png_radius", "-png_size"};
+  return names;
+}
+
+const std::set<std::string>&
+switchOptions()
+{
+  static const std::set<std::string> names{"-no_repair",  "-raw",         "-no_regions",
+                                           "-noise_mode", "-paper_noise", "-q",
+                                           "-h",          "--help"};
+  return names;
+}
+
+void
+printHelp(const char* program)
+{
+  print_error("Syntax is: %s input.{pcd,ply,obj,off} output.pcd <options>\n", program);
+  print_info(
+    "  Labels every point with the visibility radius of its voxel-band cell (Chica et "
+    "al.,\n"
+    "  \"Visibility-Based Feature Extraction From Discrete Models\"). The output "
+    "holds\n"
+    "  every field of the input plus visibility_radius (float), label (uint32) and\n"
+    "  feature_class (uint8: 0 none, 1 vertex, 2 edge, 3 face); an existing field of\n"
+    "  one of these names is overwritten. label is the region id (0 = none).\n");
+  print_info(
+    "  A mesh (.obj, .off, or .ply with faces) is first sampled to a cloud: uniformly\n"
+    "  by area, with a fixed seed (the same mesh always gives the same cloud).\n");
+  print_info("  where options are:\n");
+  print_info("    -resolution N     = cells along the longest side of the "
+             "bounding box (default: ");
+  print_value("automatic");
+  print_info(": %g point spacings per cell, the spacing estimated from k-NN "
+             "distances; %d-%d cells)\n",
+             kSpacingsPerCell, visfeat::GridSpec::kMinResolution,
+             visfeat::GridSpec::kMaxResolution);
+  print_info(
+    "    -min_radius R     = cells with radius >= R form components (default: ");
+  print_value("%d", kDefaultMinRadius);
+  print_info(" rings; the paper used 11)\n");
+  print_info("    -max_radius R     = cap of the visibility radius (default: ");
+  print_value("min_radius");
+  print_info("; %d-%d rings, >= min_radius)\n", 1, visfeat::VisibilityMap::kMaxRadius);
+  print_info("    -vertex_cells N   = components of <= N cells are vertex candidates "
+             "(default: ");
+  print_value("%d", kDefaultVertexCells);
+  print_info(" cells)\n");
+  print_info("    -dimensionality D = raw mode: edge if mean same-component "
+             "6-neighbours < D (default: ");
+  print_value("%g", kDefaultDimensionality);
+  print_info(")\n");
+  print_info("    -raw              = the paper's literal components (no regions, no "
+             "clean-up)\n");
+  print_info("    -no_regions       = label the components' cores only, not every "
+             "point\n");
+  print_info("    -opacity D        = blocked length tolerated between two "
+             "cells (default: ");
+  print_value("%g", kDefaultOpacity);
+  print_info(" cell edges = exact)\n");
+  print_info("    -paper_noise      = the paper's setting for noise (its Section 6): "
+             "-opacity ");
+  print_value("%g",
+              visfeat::VisibilityFeatureEstimation<pcl::PointXYZ>::kPaperNoiseOpacity);
+  print_info(", no smoothing; -noise_mode does better on our measurements\n");
+  print_info("    -noise_mode       = noisy scans (Gaussian noise up to ~0.5 cell): "
+             "-smooth 2, feature points within 1.25 cells of a curve (default: ");
+  print_value("off");
+  print_info(")\n");
+  print_info("    -smooth R         = project every point onto the plane of its "
+             "neighbours within R cells first (default: ");
+  print_value("0");
+  print_info(" = off, ");
+  print_value("2");
+  print_info(" with -noise_mode; 0-8 cells)\n");
+  print_info("    -threads T        = threads of the visibility map (default: ");
+  print_value("%d", kDefaultThreads);
+  print_info(" = all)\n");
+  print_info("    -no_repair        = do not add cells to make the band "
+             "6-connected (default: ");
+  print_value("repair on");
+  print_info(")\n");
+  print_info("    -memory_limit_mb M = refuse grids needing more memory (default: ");
+  print_value("0");
+  print_info(" = 3/4 of physical memory, MiB)\n");
+  print_info("    -voxels cells.pcd = also write one point per band cell "
+             "(cell centre, i j k, visibility_radius, label, feature_class)\n");
+  print_info(
+    "    -graph g.{dot,json} = also write the topology graph: GraphViz DOT, or JSON "
+    "with the grid and every parameter\n");
+  print_info("    -mesh_points N    = mesh input: number of points to sample "
+             "(default: ");
+  print_value("%zu", MeshDensity().points);
+  print_info(" points; 1-%zu)\n", kMaxMeshPoints);
+  print_info(
+    "    -mesh_spacing S   = mesh input: sample area / S^2 points instead, S = "
+    "mean spacing (default: ");
+  print_value("unset");
+  print_info("; world units)\n");
+  printPictureHelp();
+  print_info("    -q                = quiet: errors only\n");
+  print_info("  Outputs are written to a temporary file and renamed when complete.\n");
+}
+
+namespace {
+
+/** \brief The numeric options and the settings that exclude each other. */
+bool
+readValues(const Arguments& args, Options& opt, std::string& error)
+{
+  // Types and signs here; ranges with the library's own limits, before the (possibly
+  // long) load.
+  if (!args.getInteger("-resolution", visfeat::GridSpec::kMinResolution,
+                       visfeat::GridSpec::kMaxResolution, opt.resolution, error) ||
+      !args.getInteger("-max_radius", 1, visfeat::VisibilityMap::kMaxRadius,
+                       opt.max_radius, error) ||
+      !args.getInteger("-min_radius", 1, visfeat::VisibilityMap::kMaxRadius,
+                       opt.min_radius, error) ||
+      !args.getInteger("-vertex_cells", 0, 100000, opt.vertex_cells, error) ||
+      !args.getReal("-dimensionality", 0.0, 6.0, opt.dimensionality, error) ||
+      !args.getReal("-opacity", 0.0, visfeat::VisibilityMap::kMaxOpacity, opt.opacity,
+                    error) ||
+      !args.getReal("-smooth", 0.0, 8.0, opt.smooth, error) ||
+      !args.getInteger("-threads", 0, visfeat::VisibilityMap::kMaxThreads, opt.threads,
+                       error) ||
+      !args.getInteger("-memory_limit_mb", 0, 1LL << 40, opt.memory_limit_mb, error) ||
+      !args.getInteger("-mesh_points", 1, static_cast<long long>(kMaxMeshPoints),
+                       opt.mesh.points, error) ||
+      !args.getReal("-mesh_spacing", -std::numeric_limits<double>::max(),
+                    std::numeric_limits<double>::max(), opt.mesh.spacing, error))
+    return false;
+  if (opt.paper_noise && opt.noise_mode) {
+    error = "-paper_noise and -noise_mode are two settings for noise: give one";
+    return false;
+  }
+  if (opt.paper_noise && args.has("-opacity")) {
+    error = "-paper_noise sets the opacity: give -paper_noise or -opacity";
+    return false;
+  }
+  if (opt.paper_noise)
+    opt.opacity =
+      visfeat::VisibilityFeatureEstimation<pcl::PointXYZ>::kPaperNoiseOpacity;
+  if (args.has("-mesh_spacing") && !(opt.mesh.spacing > 0.0)) {
+    error = "-mesh_spacing must be positive, got " + args.value("-mesh_spacing");
+    return false;
+  }
+  if (args.has("-mesh_spacing") && args.has("-mesh_points")) {
+    error = "give -mesh_points or -mesh_spacing, not both";
+    return false;
+  }
+  opt.repair = !args.has("-no_repair");
+  opt.raw = args.has("-raw");
+  opt.regions = !args.has("-no_regions");
+  if (opt.max_radius == 0)
+    opt.max_radius = opt.min_radius;
+  if (opt.min_radius > opt.max_radius) {
+    error = "-min_radius " + std::to_string(opt.min_radius) + " exceeds -max_radius " +
+            std::to_string(opt.max_radius) + ": components need radii up to min_radius";
+    return false;
+  }
+  return true;
+}
+
+/** \brief The output cloud, -voxels and -graph: the right extensions, writable,
+ * distinct; checked before any work. */
+bool
+readOutputs(const Arguments& args, Options& opt, std::string& error)
+{
+  opt.voxels = args.value("-voxels");
+  if (args.has("-voxels") && opt.voxels.empty()) {
+    error = "-voxels needs a file name";
+    return false;
+  }
+  for (const std::string& path : {opt.output, opt.voxels}) {
+    if (path.empty())
+      continue;
+    if (lowerExtension(path) != ".pcd") {
+      error = "output '" + path + "' must have the extension .pcd";
+      return false;
+    }
+    if (!checkWritable(path, error))
+      return false;
+  }
+  if (!opt.voxels.empty() && opt.voxels == opt.output) {
+    error = "the -voxels file must differ from the output file";
+    return false;
+  }
+  opt.graph = args.value("-graph");
+  if (args.has("-graph")) {
+    const std::string ext = lowerExtension(opt.graph);
+    if (opt.graph.empty()) {
+      error = "-graph needs a file name";
+      return false;
+    }
+    if (ext != ".dot" && ext != ".gv" && ext != ".json") {
+      error =
+        "graph output '" + opt.graph + "' must have the extension .dot, .gv or .json";
+      return false;
+    }
+    if (!checkWritable(opt.graph, error))
+      return false;
+    if (opt.graph == opt.output || opt.graph == opt.voxels) {
+      error = "the -graph file must differ from the other outputs";
+      return false;
+    }
+  }
+  return true;
+}
+
+} // namespace
+
+bool
+readOptions(const Arguments& args, Options& opt, std::string& error)
+{
+  if (args.positional().size() != 2) {
+    error = "expected an input (.pcd, .ply, .obj or .off) and an output (.pcd), got " +
+            std::to_string(args.positional().size()) + " file argument(s) (see -h)";
+    return false;
+  }
+  opt.input = args.positional()[0];
+  opt.output = args.positional()[1];
+  return readValues(args, opt, error) && readOutputs(args, opt, error) &&
+         parsePictureRequests(args, {opt.output, opt.voxels, opt.graph}, opt.pictures,
+                              error);
+}
+
+} // namespace visfeat_tools

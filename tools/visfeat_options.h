@@ -1,0 +1,65 @@
+// The options of the visfeat tool (not installed, not public API): their defaults, the
+// help text, and reading and checking them before any work (values in range, settings
+// that exclude each other, output files writable and distinct).
+#pragma once
+
+#include "common/arguments.h"
+#include "common/mesh_input.h"
+#include "picture/picture_requests.h"
+
+#include <set>
+#include <string>
+
+namespace visfeat_tools {
+
+// No default resolution: without -resolution it follows from the point spacing
+// (kSpacingsPerCell spacings per cell, common/automatic_resolution.h).
+constexpr int kDefaultMinRadius = 16;
+constexpr int kDefaultVertexCells = 25;
+constexpr double kDefaultDimensionality = 3.5;
+constexpr double kDefaultOpacity = 0.0;
+constexpr int kDefaultThreads = 0;
+
+/** \brief The visfeat tool's command line, read and checked. */
+struct Options
+{
+  std::string input;
+  std::string output;
+  int resolution = 0; // 0 = automatic
+  int min_radius = kDefaultMinRadius;
+  int max_radius = 0; // 0 = min_radius
+  int vertex_cells = kDefaultVertexCells;
+  double dimensionality = kDefaultDimensionality;
+  bool raw = false;
+  bool regions = true;
+  double opacity = kDefaultOpacity;
+  bool noise_mode = false;
+  bool paper_noise = false;
+  double smooth = -1.0; // -1 = as the mode says
+  int threads = kDefaultThreads;
+  bool repair = true;
+  long long memory_limit_mb = 0;
+  std::string voxels;
+  std::string graph;
+  MeshDensity mesh;
+  bool quiet = false;
+  PictureRequests pictures;
+};
+
+/** \brief The options that take a value, for Arguments. */
+const std::set<std::string>& valueOptions();
+
+/** \brief The options without a value (switches), for Arguments. */
+const std::set<std::string>& switchOptions();
+
+/** \brief Print the help: syntax and every option with its default. */
+void printHelp(const char* program);
+
+/** \brief Read the file arguments and every option of `args` into `options` (whose
+ * quiet, noise_mode and paper_noise the caller has set) and check them: ranges with the
+ * library's own limits, settings that exclude each other, outputs with the right
+ * extensions, writable and distinct, pictures possible here. On failure `error` is one
+ * line. */
+bool readOptions(const Arguments& args, Options& options, std::string& error);
+
+} // namespace visfeat_tools
