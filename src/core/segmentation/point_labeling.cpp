@@ -1,0 +1,148 @@
+#include <visfeat/core/common/error.h>
+#include <visfeat/core/segmentation/point_labeling.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+namespace visfeat {
+
+PointLabeling::PointLabeling(const VoxelBand& band,
+                             const FeatureSegmentation& segmentation,
+                             double point_feature_distance)
+    : band_(band)
+    , segmentation_(segmentation)
+    , distance_(point_feature_distance)
+{
+  if (!(std::isfinite(distance_) && distance_ >= 0.0)) {
+    std::ostringstream msg;
+    msg << "point_feature_distance " << distance_
+        << " must be finite and >= 0 (cells; 0 = off)";
+    throw Error(msg.str());
+  }
+  const std::vector<char>& skeleton = segmentation.skeleton();
+  if (segmentation.cellLabels().size() != band.size() ||
+      (!skeleton.empty() && (skeleton.size() != band.size() ||
+                             segmentation.skeletonCentres().size() != band.size() ||
+                             segmentation.skeletonTangents().size() != band.size())))
+    throw Error("PointLabeling: the segmentation was not computed on this band");
+  if (distance_ <= 0.0 || skeleton.empty())
+    return;
+  // Only points of cells within kSkeletonReach of a skeleton cell can change label.
+  near_skeleton_.assign(skeleton.size(), 0);
+  for (std::size_t c = 0; c < skeleton.size(); ++c) {
+    if (!skeleton[c])
+      continue;
+    const CellCoord at = band.coord(static_cast<CellId>(c));
+    for (int dz = -kSkeletonReach; dz <= kSkeletonReach; ++dz)
+      for (int dy = -kSkeletonReach; dy <= kSkeletonReach; ++dy)
+        for (int dx = -kSkeletonReach; dx <= kSkeletonReach; ++dx) {
+          const CellId n = band.find(at + CellCoord(dx, dy, dz));
+          if (n != kNoCell)
+            near_skeleton_[static_cast<std::size_t>(n)] = 1;
+        }
+  }
+}
+
+PointLabel
+PointLabeling::labelOf(const Eigen::Vector3d& q, CellId cell) const
+{
+  PointLabel result;
+  if (cell == kNoCell)
+    return result;
+  result.label = segmentation_.cellLabels()[static_cast<std::size_t>(cell)];
+  result.feature_class = segmentation_.cellClass(cell);
+  if (near_skeleton_.empty() || !near_skeleton_[static_cast<std::size_t>(cell)])
+    return result;
+
+  const std::vector<char>& skeleton = segmentation_.skeleton();
+  const std::vector<Eigen::Vector3f>& centres = segmentation_.skeletonCentres();
+  const std::vector<Eigen::Vector3f>& tangents = segmentation_.skeletonTangents();
+  const CellCoord c = band_.coord(cell);
+  double near_skeleton = std::numeric_limits<double>::infinity();
+  CellId nearest_skeleton = kNoCell;
+  double near_vertex = std::numeric_limits<double>::infinity();
+  CellId nearest_vertex = kNoCell;
+  double near_face = std::numeric_limits<double>::infinity();
+  std::uint32_t face = 0;
+  for (int dz = -kSkeletonReach; dz <= kSkeletonReach; ++dz)
+    for (int dy = -kSkeletonReach; dy <= kSkeletonReach; ++dy)
+      for (int dx = -kSkeletonReach; dx <= kSkeletonReach; ++dx) {
+        const CellId n = band_.find(c + CellCoord(dx, dy, dz));
+        if (n == kNoCell)
+          continue;
+        const auto s = static_cast<std::size_t>(n);
+        if (skeleton[s]) {
+          // Distance to the piece of middle line the skeleton cell stands for.
+          const Eigen::Vector3d d = q - centres[s].cast<double>();
+          const Eigen::Vector3d u = tangents[s].cast<double>();
+          const double along = std::clamp(d.dot(u), -kHalfPiece, kHalfPiece);
+          const double distance = (d - along * u).norm();
+          if (distance < near_skeleton) {
+            near_skeleton = distance;
+            nearest_skeleton = n;
+          }
+          if (distance < near_vertex &&
+              segmentation_.cellClass(n) == FeatureClass::kVertex) {
+            near_vertex = distance;
+            nearest_vertex = n;
+          }
+        }
+        if (std::abs(dx) <= kFaceReach && std::abs(dy) <= kFaceReach &&
+            std::abs(dz) <= kFaceReach &&
+            segmentation_.cellClass(n) == FeatureClass::kFace) {
+          const double d =
+            (band_.coord(n).cast<double>() + Eigen::Vector3d::Constant(0.5) - q).norm();
+          if (d < near_face) {
+            near_face = d;
+            face = segmentation_.cellLabels()[s];
+          }
+        }
+      }
+  if (near_vertex <= distance_)
+    nearest_skeleton = nearest_vertex;
+  if (near_skeleton <= distance_) {
+    result.label =
+      segmentation_.cellLabels()[static_cast<std::size_t>(nearest_skeleton)];
+    result.feature_class = segmentation_.cellClass(nearest_skeleton);
+  } else if ((result.feature_class == FeatureClass::kEdge ||
+              result.feature_class == FeatureClass::kVertex) &&
+             face != 0) {
+    result.label = face;
+    result.feature_class = FeatureClass::kFace;
+  }
+  return result;
+}
+
+RegionPointGeometry::RegionPointGeometry(std::size_t regions)
+{
+  Sum empty;
+  empty.min = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
+  empty.max = -empty.min;
+  sums_.assign(regions, empty);
+}
+
+void
+RegionPointGeometry::add(std::uint32_t label, const Eigen::Vector3d& p)
+{
+  if (label == 0 || label > sums_.size() || !p.allFinite())
+    return;
+  Sum& s = sums_[label - 1];
+  ++s.n;
+  s.sum += p;
+  s.min = s.min.cwiseMin(p);
+  s.max = s.max.cwiseMax(p);
+}
+
+void
+RegionPointGeometry::applyTo(TopologyGraph& graph) const
+{
+  for (std::size_t r = 0; r < sums_.size(); ++r)
+    if (sums_[r].n > 0)
+      graph.setPointGeometry(static_cast<std::uint32_t>(r + 1), sums_[r].n,
+                             sums_[r].sum / static_cast<double>(sums_[r].n),
+                             sums_[r].min, sums_[r].max);
+}
+
+} // namespace visfeat
