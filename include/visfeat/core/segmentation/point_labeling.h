@@ -43,7 +43,8 @@ struct PointLabel
  * Ties keep the first cell in z, y, x scan order (dz, dy, dx from -2 to 2). With d = 0
  * or without a skeleton, every point takes its cell's label and class.
  *
- * The object keeps references to the band and the segmentation: they must outlive it.
+ * The object keeps references to the band and the segmentation (or the arrays): they
+ * must outlive it.
  */
 class PointLabeling
 {
@@ -67,6 +68,26 @@ public:
                 const FeatureSegmentation& segmentation,
                 double point_feature_distance);
 
+  /** \brief The same from plain arrays (as FeatureSegmentation gives them).
+   * \param[in] cell_labels per band cell, its region label (1-based), 0 = none
+   * \param[in] region_classes region_classes[label - 1] is the class of a region
+   * \param[in] skeleton per band cell, 1 on an edge's or vertex's skeleton; empty =
+   *            no skeleton (points take their cell's label)
+   * \param[in] skeleton_centres per band cell (skeleton cells only), the middle of the
+   *            skeleton around it, in cell units
+   * \param[in] skeleton_tangents per band cell (skeleton cells only), the unit
+   *            direction of the middle line there, or zero
+   * The arrays are referenced, not copied: they must outlive the object.
+   * \throws visfeat::Error when sizes do not match the band, a label exceeds the
+   *         regions, or d is negative or not finite. */
+  PointLabeling(const VoxelBand& band,
+                const std::vector<std::uint32_t>& cell_labels,
+                std::vector<FeatureClass> region_classes,
+                const std::vector<char>& skeleton,
+                const std::vector<Eigen::Vector3f>& skeleton_centres,
+                const std::vector<Eigen::Vector3f>& skeleton_tangents,
+                double point_feature_distance);
+
   /** \brief The label and class of a point.
    * \param[in] q the point in cell units of the band's grid (GridSpec::toCellUnits)
    * \param[in] cell the band cell holding it (GridSpec::cellOf, VoxelBand::find, or
@@ -78,8 +99,18 @@ public:
   const std::vector<char>& nearSkeleton() const { return near_skeleton_; }
 
 private:
+  FeatureClass cellClass(CellId cell) const
+  {
+    const std::uint32_t label = labels_[static_cast<std::size_t>(cell)];
+    return label == 0 ? FeatureClass::kNone : classes_[label - 1];
+  }
+
   const VoxelBand& band_;
-  const FeatureSegmentation& segmentation_;
+  const std::vector<std::uint32_t>& labels_;
+  std::vector<FeatureClass> classes_;
+  const std::vector<char>& skeleton_;
+  const std::vector<Eigen::Vector3f>& centres_;
+  const std::vector<Eigen::Vector3f>& tangents_;
   double distance_;
   std::vector<char> near_skeleton_;
 };
