@@ -57,10 +57,11 @@ struct PhaseTimes
  * est.compute(out); // out.empty() on error, with the reason in getErrorMessage()
  * \endcode
  *
- * No search tree is used: the estimator overrides initCompute(), so neither k nor a
- * radius has to be set. The band is built from the search surface (the input unless
- * setSearchSurface() was called); output is produced for the input's indices, each
- * point labelled from the band cell it falls in (GridSpec::cellOf).
+ * No search method is used: the estimator overrides initCompute(), so neither k nor a
+ * radius has to be set (the automatic resolution builds its own k-d tree). The band is
+ * built from the search surface (the input unless setSearchSurface() was called);
+ * output is produced for the input's indices, each point labelled from the band cell it
+ * falls in (GridSpec::cellOf).
  *
  * Parameters are read when compute() runs, so the order of the set calls does not
  * matter: max_radius 0 ("auto", the default) is min_radius; the noise mode gives the

@@ -12,7 +12,9 @@ namespace visfeat {
 
 /** \brief Called now and then with the cells done so far and the total: every few
  * hundred cells from the calling thread or OpenMP's thread 0, never concurrently, and
- * once more at the end with done == total. Keep it cheap. */
+ * once more at the end with done == total. Keep it cheap, and do not throw: all calls
+ * but the last come from inside an OpenMP parallel region, which an exception must not
+ * leave. */
 using ProgressCallback = std::function<void(std::size_t done, std::size_t total)>;
 
 /** \brief The trimmed visibility map: a visibility radius for every mixed cell.
