@@ -1,6 +1,7 @@
 // VisibilityFeatureEstimation<pcl::PointXYZ, PointVisibility>: per-point output,
-// NaN handling, indices, determinism, agreement with the brute-force reference through
-// the whole chain, and clear errors on bad input.
+// NaN handling, indices, determinism (radii, labels, classes and the topology graph for
+// any thread count and point order), agreement with the brute-force reference through
+// the whole chain, and the exact message of each bad input.
 
 #include "band_fixtures.h"
 #include "reference/brute_force.h"
@@ -15,8 +16,10 @@
 #include <cctype>
 #include <cmath>
 #include <cstring>
+#include <functional>
 #include <initializer_list>
 #include <limits>
+#include <memory>
 #include <numeric>
 #include <random>
 
@@ -86,6 +89,59 @@ expectError(Estimator& est, std::initializer_list<const char*> words)
   }
   EXPECT_TRUE(found) << "message \"" << est.getErrorMessage() << "\" mentions none of"
                      << list;
+}
+
+/** The same, and the message is exactly `message`. */
+void
+expectErrorMessage(Estimator& est, const std::string& message)
+{
+  Output out;
+  out.push_back(visfeat::PointVisibility(1.f, 2.f, 3.f));
+  est.compute(out);
+  EXPECT_TRUE(out.empty()) << "output should be empty on error";
+  EXPECT_EQ(out.width * out.height, 0u);
+  EXPECT_EQ(est.getErrorMessage(), message);
+}
+
+/** Labels, classes and radii of two outputs, point j of `b` against point perm[j] of
+ * `a`. */
+void
+expectSamePoints(const Output& a,
+                 const Output& b,
+                 const std::vector<std::size_t>& perm,
+                 const std::string& what)
+{
+  ASSERT_EQ(a.size(), b.size()) << what;
+  for (std::size_t j = 0; j < b.size(); ++j) {
+    const visfeat::PointVisibility& p = a.points[perm[j]];
+    const visfeat::PointVisibility& q = b.points[j];
+    ASSERT_TRUE(sameFloat(p.visibility_radius, q.visibility_radius))
+      << what << ", point " << j;
+    ASSERT_EQ(p.label, q.label) << what << ", point " << j;
+    ASSERT_EQ(p.feature_class, q.feature_class) << what << ", point " << j;
+  }
+}
+
+/** Same nodes (id, class, cells, points, bounds; centroid up to rounding: the points
+ * are summed in input order) and same arcs. */
+void
+expectSameGraph(const visfeat::TopologyGraph& a,
+                const visfeat::TopologyGraph& b,
+                const std::string& what)
+{
+  ASSERT_EQ(a.size(), b.size()) << what;
+  for (std::uint32_t id = 1; id <= a.size(); ++id) {
+    const visfeat::GraphNode& p = a.node(id);
+    const visfeat::GraphNode& q = b.node(id);
+    EXPECT_EQ(p.id, q.id) << what;
+    EXPECT_EQ(p.feature_class, q.feature_class) << what << ", node " << id;
+    EXPECT_EQ(p.cells, q.cells) << what << ", node " << id;
+    EXPECT_EQ(p.points, q.points) << what << ", node " << id;
+    EXPECT_EQ(p.min, q.min) << what << ", node " << id;
+    EXPECT_EQ(p.max, q.max) << what << ", node " << id;
+    EXPECT_LT((p.centroid - q.centroid).norm(), 1e-9) << what << ", node " << id;
+  }
+  EXPECT_EQ(a.arcs(), b.arcs()) << what;
 }
 
 // ---------------------------------------------------------------- output
@@ -207,12 +263,13 @@ TEST(Estimator, SameOutputForShuffledPointsAndThreadCounts)
     shuffled->push_back(cloud->points[i]);
   shuffled->is_dense = false;
 
-  Output a, b, c;
-  Estimator ea, eb, ec;
+  Output a, b, c, d;
+  Estimator ea, eb, ec, ed;
   ea.setInputCloud(cloud);
   eb.setInputCloud(shuffled);
   ec.setInputCloud(cloud);
-  for (Estimator* e : {&ea, &eb, &ec}) {
+  ed.setInputCloud(shuffled);
+  for (Estimator* e : {&ea, &eb, &ec, &ed}) {
     e->setResolution(24);
     e->setMaxRadius(9);
     e->setMinRadius(9); // components need min_radius <= max_radius
@@ -221,9 +278,11 @@ TEST(Estimator, SameOutputForShuffledPointsAndThreadCounts)
   ea.setNumberOfThreads(1);
   eb.setNumberOfThreads(2);
   ec.setNumberOfThreads(2);
+  ed.setNumberOfThreads(4);
   ea.compute(a);
   eb.compute(b);
   ec.compute(c);
+  ed.compute(d);
   ASSERT_EQ(a.size(), cloud->size());
   ASSERT_EQ(b.size(), cloud->size());
   ASSERT_EQ(c.size(), cloud->size());
@@ -235,6 +294,62 @@ TEST(Estimator, SameOutputForShuffledPointsAndThreadCounts)
     ASSERT_TRUE(sameFloat(c.points[j].visibility_radius, a.points[j].visibility_radius))
       << "2 threads, point " << j;
   }
+  std::vector<std::size_t> identity(perm.size());
+  std::iota(identity.begin(), identity.end(), 0);
+  expectSamePoints(a, b, perm, "shuffled, 2 threads");
+  expectSamePoints(a, c, identity, "2 threads");
+  expectSamePoints(a, d, perm, "shuffled, 4 threads");
+  EXPECT_EQ(ea.getSegmentation().cellLabels(), eb.getSegmentation().cellLabels());
+  EXPECT_EQ(ea.getSegmentation().cellLabels(), ed.getSegmentation().cellLabels());
+  expectSameGraph(ea.getTopologyGraph(), eb.getTopologyGraph(), "shuffled, 2 threads");
+  expectSameGraph(ea.getTopologyGraph(), ec.getTopologyGraph(), "2 threads");
+  expectSameGraph(ea.getTopologyGraph(), ed.getTopologyGraph(), "shuffled, 4 threads");
+}
+
+// Complete regions with edges, vertices and faces, in the noise mode (smoothing is
+// multithreaded too): labels, classes and graph for 1, 2 and 4 threads and shuffled
+// points.
+TEST(Estimator, SameRegionsAndGraphForShuffledPointsAndThreadCounts)
+{
+  Cloud::Ptr cloud(new Cloud(visfeat_test::syntheticShapeCloud("cube", 70, 56)));
+  std::vector<std::size_t> perm(cloud->size());
+  std::iota(perm.begin(), perm.end(), 0);
+  std::mt19937_64 rng(10);
+  std::shuffle(perm.begin(), perm.end(), rng);
+  Cloud::Ptr shuffled(new Cloud);
+  for (std::size_t i : perm)
+    shuffled->push_back(cloud->points[i]);
+  std::vector<std::size_t> identity(perm.size());
+  std::iota(identity.begin(), identity.end(), 0);
+
+  const auto run = [](const Cloud::Ptr& input, unsigned threads, Output& out) {
+    auto est = std::make_unique<Estimator>();
+    est->setInputCloud(input);
+    est->setResolution(56);
+    est->setMinRadius(8);
+    est->setNoiseMode(true);
+    est->setNumberOfThreads(threads);
+    est->compute(out);
+    EXPECT_EQ(est->getErrorMessage(), "");
+    return est;
+  };
+  Output a, b, c, d;
+  const auto ea = run(cloud, 1, a);
+  const auto eb = run(shuffled, 2, b);
+  const auto ec = run(cloud, 4, c);
+  const auto ed = run(shuffled, 4, d);
+  // The case is not trivial: vertices, edges and faces, and arcs between them.
+  const visfeat::TopologyGraph& graph = ea->getTopologyGraph();
+  ASSERT_GT(graph.classCount(visfeat::FeatureClass::kVertex), 0u);
+  ASSERT_GT(graph.classCount(visfeat::FeatureClass::kEdge), 0u);
+  ASSERT_GT(graph.classCount(visfeat::FeatureClass::kFace), 0u);
+  ASSERT_GT(graph.arcCount(), 0u);
+  expectSamePoints(a, b, perm, "shuffled, 2 threads");
+  expectSamePoints(a, c, identity, "4 threads");
+  expectSamePoints(a, d, perm, "shuffled, 4 threads");
+  expectSameGraph(graph, eb->getTopologyGraph(), "shuffled, 2 threads");
+  expectSameGraph(graph, ec->getTopologyGraph(), "4 threads");
+  expectSameGraph(graph, ed->getTopologyGraph(), "shuffled, 4 threads");
 }
 
 TEST(Estimator, ErrorMessageClearedAfterSuccess)
@@ -242,7 +357,7 @@ TEST(Estimator, ErrorMessageClearedAfterSuccess)
   Cloud::Ptr cloud(new Cloud(visfeat_test::syntheticShapeCloud("cube", 65, 12)));
   Estimator est;
   est.setInputCloud(cloud);
-  est.setResolution(0);
+  est.setResolution(-1); // 0 is the automatic resolution
   expectError(est, {"resolution"});
   est.setResolution(12);
   est.setMaxRadius(4);
@@ -261,12 +376,14 @@ TEST(EstimatorBadInput, EmptyCloud)
   est.setInputCloud(Cloud::Ptr(new Cloud));
   est.setResolution(32);
   expectError(est, {"empty", "no point"});
+  expectErrorMessage(est, "the input cloud is empty");
 }
 
 TEST(EstimatorBadInput, NoInputCloud)
 {
   Estimator est;
   expectError(est, {"input", "cloud"});
+  expectErrorMessage(est, "no input cloud: call setInputCloud() first");
 }
 
 TEST(EstimatorBadInput, AllNaNCloud)
@@ -280,6 +397,13 @@ TEST(EstimatorBadInput, AllNaNCloud)
   est.setInputCloud(cloud);
   est.setResolution(32);
   expectError(est, {"finite", "nan"});
+  expectErrorMessage(
+    est,
+    "the cloud has no finite point: all 11 points have a NaN or infinite coordinate");
+  est.setResolution(0); // automatic: the same message
+  expectErrorMessage(
+    est,
+    "the cloud has no finite point: all 11 points have a NaN or infinite coordinate");
 }
 
 TEST(EstimatorBadInput, OnePoint)
@@ -291,23 +415,35 @@ TEST(EstimatorBadInput, OnePoint)
   est.setResolution(32);
   expectError(est, {"coincide", "single", "one point", "1 point", "extent",
                     "degenerate", "identical", "same"});
+  expectErrorMessage(
+    est, "the cloud has a single finite point: there is no surface to analyse");
   // Same with repeated copies of one point and NaNs around it.
   cloud->push_back(pcl::PointXYZ(1.f, 2.f, 3.f));
   cloud->push_back(pcl::PointXYZ(kNaN, kNaN, kNaN));
   cloud->is_dense = false;
   expectError(est, {"coincide", "single", "one point", "1 point", "extent",
                     "degenerate", "identical", "same"});
+  const std::string coincide =
+    "all finite points coincide: the bounding box is a "
+    "single point, so there is no extent to divide into cells";
+  expectErrorMessage(est, coincide);
+  est.setResolution(0); // automatic: the same message
+  expectErrorMessage(est, coincide);
 }
 
 TEST(EstimatorBadInput, ResolutionOutOfRange)
 {
   Cloud::Ptr cloud(new Cloud(visfeat_test::syntheticShapeCloud("cube", 66, 12)));
-  for (int resolution : {0, -5, visfeat::GridSpec::kMinResolution - 1, 100000}) {
+  // 0 is the automatic resolution (see test_estimator_api.cpp), not out of range.
+  for (int resolution : {-1, -5, visfeat::GridSpec::kMinResolution - 1, 100000}) {
     Estimator est;
     est.setInputCloud(cloud);
     est.setResolution(resolution);
     SCOPED_TRACE("resolution " + std::to_string(resolution));
     expectError(est, {"resolution"});
+    expectErrorMessage(est, "resolution " + std::to_string(resolution) +
+                              " is out of range: 0 (automatic) or [4, 8192] (cells "
+                              "along the longest side of the bounding box)");
   }
 }
 
@@ -320,13 +456,15 @@ TEST(EstimatorBadInput, VisibilityParametersOutOfRange)
     est.setResolution(12);
     est.setOpacity(-1.0);
     expectError(est, {"opacity"});
+    expectErrorMessage(est, "opacity -1 is out of range [0, 64] (cell edges)");
   }
   {
     Estimator est;
     est.setInputCloud(cloud);
     est.setResolution(12);
-    est.setMaxRadius(0);
+    est.setMaxRadius(-1); // 0 is "auto": min_radius
     expectError(est, {"radius"});
+    expectErrorMessage(est, "max_radius -1 is out of range [1, 64] (rings)");
   }
   {
     Estimator est;
@@ -334,7 +472,59 @@ TEST(EstimatorBadInput, VisibilityParametersOutOfRange)
     est.setResolution(12);
     est.setMaxRadius(visfeat::VisibilityMap::kMaxRadius + 1);
     expectError(est, {"radius"});
+    expectErrorMessage(est, "max_radius 65 is out of range [1, 64] (rings)");
   }
+}
+
+TEST(EstimatorBadInput, EveryParameterIsNamedWithValueRangeAndUnit)
+{
+  Cloud::Ptr cloud(new Cloud(visfeat_test::syntheticShapeCloud("cube", 69, 12)));
+  const auto check = [&](const std::function<void(Estimator&)>& set,
+                         const std::string& message) {
+    Estimator est;
+    est.setInputCloud(cloud);
+    est.setResolution(12);
+    set(est);
+    SCOPED_TRACE(message);
+    expectErrorMessage(est, message);
+  };
+  check([](Estimator& e) { e.setMinRadius(0); },
+        "min_radius 0 is out of range [1, 64] (rings)");
+  check([](Estimator& e) { e.setMinRadius(65); },
+        "min_radius 65 is out of range [1, 64] (rings)");
+  check(
+    [](Estimator& e) {
+      e.setMaxRadius(8);
+      e.setMinRadius(9);
+    },
+    "min_radius 9 is out of range [1, max_radius = 8] (rings; raise max_radius to at "
+    "least min_radius)");
+  check([](Estimator& e) { e.setVertexMaxCells(-1); },
+        "vertex_max_cells -1 is out of range [0, 100000] (cells)");
+  check([](Estimator& e) { e.setDimensionality(6.5); },
+        "dimensionality 6.5 is out of range [0, 6] (mean same-component 6-neighbours)");
+  check([](Estimator& e) { e.setSmoothingRadius(8.5); },
+        "smoothing radius 8.5 is out of range [0, 8] (cells; 0 = off)");
+  check([](Estimator& e) { e.setPointFeatureDistance(-0.5); },
+        "point_feature_distance -0.5 is out of range [0, 10] (cells)");
+  check([](Estimator& e) { e.setNumberOfThreads(5000); },
+        "threads 5000 is out of range [0, 1024] (0 = all available)");
+  check([](Estimator& e) { e.setGraphDilation(1001); },
+        "dilation_radius 1001 is out of range [0, 1000] (cells)");
+  check(
+    [](Estimator& e) {
+      visfeat::SegmentationParameters p = e.getSegmentationParameters();
+      p.join_distance = 1001;
+      e.setSegmentationParameters(p);
+    },
+    "join_distance 1001 is out of range [0, 1000] (cells)");
+  check(
+    [](Estimator& e) {
+      visfeat::SegmentationParameters p = e.getSegmentationParameters();
+      p.components.face_min_depth = 0;
+      e.setSegmentationParameters(p);
+    },
+    "face_min_depth 0 is out of range [1, 1000] (cells)");
 }
 
 TEST(EstimatorBadInput, MemoryLimitIsEnforced)
@@ -345,6 +535,13 @@ TEST(EstimatorBadInput, MemoryLimitIsEnforced)
   est.setResolution(32);
   est.setMemoryLimit(1024); // 1 KiB: nothing fits
   expectError(est, {"memory", "mib"});
+  const std::string& message = est.getErrorMessage();
+  EXPECT_EQ(message.rfind("a grid of ", 0), 0u) << message;
+  EXPECT_NE(message.find(" cells needs about "), std::string::npos) << message;
+  EXPECT_NE(message.find(", more than the limit of 0.0 MiB: lower the resolution or "
+                         "raise the memory limit"),
+            std::string::npos)
+    << message;
 }
 
 } // namespace

@@ -3,6 +3,7 @@
 #include <visfeat/core/band/point_smoothing.h>
 #include <visfeat/core/band/voxel_band.h>
 #include <visfeat/core/graph/topology_graph.h>
+#include <visfeat/core/grid/resolution.h>
 #include <visfeat/core/segmentation/feature_segmentation.h>
 #include <visfeat/core/visibility/free_space.h>
 #include <visfeat/core/visibility/visibility_map.h>
@@ -12,14 +13,17 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
+#include <vector>
 
 namespace visfeat {
 
-/** \brief Wall-clock milliseconds of each phase of the last compute(). */
+/** \brief Wall-clock milliseconds of each phase of the last successful compute(). */
 struct PhaseTimes
 {
-  double grid_ms = 0.0;         // bounding box and grid
+  double shape_ms = 0.0;        // shape checks and the automatic resolution
+  double grid_ms = 0.0;         // bounding box, grid and memory check
   double smoothing_ms = 0.0;    // noise mode: points onto local planes
   double band_ms = 0.0;         // octree, mixed cells, repair, adjacency
   double free_space_ms = 0.0;   // 2x2x2 subcell mask
@@ -30,7 +34,7 @@ struct PhaseTimes
 
   double total() const
   {
-    return grid_ms + smoothing_ms + band_ms + free_space_ms + visibility_ms +
+    return shape_ms + grid_ms + smoothing_ms + band_ms + free_space_ms + visibility_ms +
            segmentation_ms + output_ms + graph_ms;
   }
 };
@@ -42,21 +46,41 @@ struct PhaseTimes
  * cells holding points form the band. For every band cell the visibility radius counts
  * the successive rings of band cells around it that it fully sees; radii are high on
  * face interiors, edges and corners, and drop in the valleys between them. Every
- * output point gets the radius of its cell in `visibility_radius`.
+ * output point gets the radius of its cell in `visibility_radius`, its region in
+ * `label` and its class in `feature_class` (PointLabeling).
  *
  * \code
  * visfeat::VisibilityFeatureEstimation<pcl::PointXYZ, visfeat::PointVisibility> est;
  * est.setInputCloud(cloud);
- * est.setResolution(256);
+ * est.setResolution(256); // or 0: from the point spacing (getResolutionEstimate())
  * pcl::PointCloud<visfeat::PointVisibility> out;
  * est.compute(out); // out.empty() on error, with the reason in getErrorMessage()
  * \endcode
  *
- * No search tree is used: the estimator overrides initCompute(), so neither k nor a
- * radius has to be set. The band is built from the search surface (the input unless
- * setSearchSurface() was called); output is produced for the input's indices.
+ * No search method is used: the estimator overrides initCompute(), so neither k nor a
+ * radius has to be set (the automatic resolution builds its own k-d tree). The band is
+ * built from the search surface (the input unless setSearchSurface() was called);
+ * output is produced for the input's indices, each point labelled from the band cell it
+ * falls in (GridSpec::cellOf).
+ *
+ * Parameters are read when compute() runs, so the order of the set calls does not
+ * matter: max_radius 0 ("auto", the default) is min_radius; the noise mode gives the
+ * smoothing radius and point_feature_distance that were not set explicitly. The
+ * getters return the values compute() will use.
+ *
+ * compute() refuses, with a one-line getErrorMessage() and a PCL_ERROR, a missing or
+ * empty cloud, clouds without a surface (no finite point, one point, all points
+ * coincident or collinear, or within 2 cells of a line at the resolution), parameters
+ * out of range (the message names the parameter, its value, range and unit), grids
+ * over the memory limit, and any exception of the pipeline (visfeat::Error,
+ * std::bad_alloc, std::exception). A failed compute() leaves every result getter as it
+ * was after the last successful one (the new results are built aside and moved in on
+ * success; so during a compute() the previous results still hold their memory). A
+ * coplanar cloud is processed (one face), with a note in getNotes() and a PCL_WARN.
  *
  * PointOutT needs the fields x, y, z, visibility_radius, label and feature_class.
+ * Explicitly instantiated for PCL_XYZ_POINT_TYPES (PointXYZ, PointXYZI, PointNormal,
+ * ...) with PointVisibility; other types need PCL_NO_PRECOMPILE.
  */
 template <typename PointInT, typename PointOutT = PointVisibility>
 class VisibilityFeatureEstimation : public pcl::Feature<PointInT, PointOutT>
@@ -68,28 +92,53 @@ public:
   using PointCloudIn = typename pcl::Feature<PointInT, PointOutT>::PointCloudIn;
   using PointCloudOut = typename pcl::Feature<PointInT, PointOutT>::PointCloudOut;
 
+  /** \brief setResolution(kAutomaticResolution): from the point spacing. */
+  static constexpr int kAutomaticResolution = 0;
+  /** \brief setMaxRadius(kAutoMaxRadius): the cap is min_radius. */
+  static constexpr int kAutoMaxRadius = 0;
+  /** \brief Smoothing radius of the noise mode (cells). */
+  static constexpr double kNoiseSmoothingRadius = SmoothingParameters::kDefaultRadius;
+  /** \brief point_feature_distance of the noise mode (cells). */
+  static constexpr double kNoisePointDistance =
+    SegmentationParameters::kNoisePointFeatureDistance;
+  /** \brief The paper's opacity for noise (its Section 6): 3 cell edges. */
+  static constexpr double kPaperNoiseOpacity = 3.0;
+
   VisibilityFeatureEstimation()
   {
     feature_name_ = "VisibilityFeatureEstimation";
     // Voxel-based: no neighbourhood search; these keep Feature's checks satisfied.
     k_ = 1;
     search_radius_ = 0.0;
-    visibility_.max_radius = segmentation_parameters_.components.min_radius;
   }
 
-  /** \brief Cells along the longest side of the bounding box (default 256).
-   * The paper's defaults (min_radius 11) are tuned for 256-768; below ~64 the
-   * valleys between features are too narrow to separate them. */
+  /** \brief Cells along the longest side of the bounding box of the finite points of
+   * the search surface. Default GridSpec::kDefaultResolution (256); range
+   * GridSpec::kResolutionRange ([4, 8192]) or kAutomaticResolution (0): two point
+   * spacings per cell (estimateResolution(); what was chosen and why is in
+   * getResolutionEstimate() after compute()). Features must be many cells apart
+   * (about 2 min_radius): 256 for parts whose faces are >= 1/10 of their size, 512 for
+   * finer detail; the point spacing must stay below ~0.7 cell. Memory grows with the
+   * cube (setMemoryLimit()). */
   inline void setResolution(int resolution) { resolution_ = resolution; }
+  /** \brief The resolution as set (0 = automatic). */
   inline int getResolution() const { return resolution_; }
 
-  /** \brief Cap of the visibility radius in rings (default 16 = min_radius, range
-   * 1-64). Must be at least min_radius; higher values only cost time. */
-  inline void setMaxRadius(int max_radius) { visibility_.max_radius = max_radius; }
-  inline int getMaxRadius() const { return visibility_.max_radius; }
+  /** \brief Cap of the visibility radius, in rings. Default kAutoMaxRadius (0): the
+   * min_radius compute() uses (the trimmed map; higher caps only cost time, radii above
+   * min_radius change no region). Range VisibilityMap::Parameters::kMaxRadiusRange
+   * ([1, 64]) and at least min_radius. */
+  inline void setMaxRadius(int max_radius) { max_radius_ = max_radius; }
+  /** \brief The cap compute() will use (auto resolved to min_radius). */
+  inline int getMaxRadius() const
+  {
+    return max_radius_ == kAutoMaxRadius ? getMinRadius() : max_radius_;
+  }
 
-  /** \brief Cells with radius >= min_radius form components (default 16 rings; the
-   * paper used 11, see ComponentParameters::min_radius). */
+  /** \brief Cells with radius >= min_radius form components, in rings. Default
+   * kDefaultMinRadius (16; the paper used 11, see ComponentParameters::min_radius);
+   * range ComponentParameters::kMinRadiusRange and at most max_radius. In cells: it
+   * does not scale with resolution. */
   inline void setMinRadius(int min_radius)
   {
     segmentation_parameters_.components.min_radius = min_radius;
@@ -99,8 +148,8 @@ public:
     return segmentation_parameters_.components.min_radius;
   }
 
-  /** \brief Components of at most this many cells are vertex candidates (default 25).
-   */
+  /** \brief Components of at most this many cells are vertex candidates. Default 25,
+   * range ComponentParameters::kVertexMaxCellsRange (cells). */
   inline void setVertexMaxCells(int cells)
   {
     segmentation_parameters_.components.vertex_max_cells = cells;
@@ -110,8 +159,8 @@ public:
     return segmentation_parameters_.components.vertex_max_cells;
   }
 
-  /** \brief Raw mode's edge/face threshold on mean same-component 6-neighbours
-   * (default 3.5, the paper's). */
+  /** \brief Raw mode's edge/face threshold on mean same-component 6-neighbours.
+   * Default 3.5 (the paper's), range ComponentParameters::kDimensionalityRange. */
   inline void setDimensionality(double dimensionality)
   {
     segmentation_parameters_.components.dimensionality = dimensionality;
@@ -135,55 +184,87 @@ public:
     return segmentation_parameters_.complete_regions;
   }
 
-  /** \brief All segmentation parameters at once (see SegmentationParameters). */
+  /** \brief All segmentation parameters at once (see SegmentationParameters for
+   * defaults, units and ranges). point_feature_distance counts as set explicitly
+   * (setPointFeatureDistance()) only when it differs from getPointFeatureDistance():
+   * so getSegmentationParameters(), a change, then setSegmentationParameters() leaves
+   * it to the noise mode. */
   inline void setSegmentationParameters(const SegmentationParameters& parameters)
   {
+    if (parameters.point_feature_distance != getPointFeatureDistance())
+      point_feature_distance_ = parameters.point_feature_distance;
     segmentation_parameters_ = parameters;
   }
-  inline const SegmentationParameters& getSegmentationParameters() const
+  /** \brief The segmentation parameters compute() will use (point_feature_distance as
+   * the noise mode gives it unless set explicitly). */
+  inline SegmentationParameters getSegmentationParameters() const
   {
-    return segmentation_parameters_;
+    SegmentationParameters parameters = segmentation_parameters_;
+    parameters.point_feature_distance = getPointFeatureDistance();
+    return parameters;
   }
 
-  /** \brief Smoothing radius in cells (default 0 = off): before the band is built,
-   * every point is projected onto the least-squares plane of its neighbours within
-   * this radius (smoothPoints()). For noisy scans; see setNoiseMode(). */
-  inline void setSmoothingRadius(double cells) { smoothing_.radius = cells; }
-  inline double getSmoothingRadius() const { return smoothing_.radius; }
-
-  /** \brief Noise mode for scans with Gaussian noise up to about half a cell: smoothing
-   * radius 2 cells and point_feature_distance 1.25 cells (feature points keep the same
-   * 2-cell bound with the noise left along the surface). Off: smoothing 0 and
-   * point_feature_distance 1. Call before setting either individually. */
-  inline void setNoiseMode(bool on)
+  /** \brief Per point: a point is an edge or vertex point when within this distance,
+   * in cells, of the middle line of a skeleton around it (PointLabeling; 0 = points
+   * take their cell's label). Default 1.0, or kNoisePointDistance (1.25) in the noise
+   * mode, unless set; range SegmentationParameters::kPointFeatureDistanceRange
+   * ([0, 10] cells). */
+  inline void setPointFeatureDistance(double cells) { point_feature_distance_ = cells; }
+  /** \brief The distance compute() will use. */
+  inline double getPointFeatureDistance() const
   {
-    smoothing_.radius = on ? kNoiseSmoothingRadius : 0.0;
-    segmentation_parameters_.point_feature_distance = on ? kNoisePointDistance : 1.0;
+    if (point_feature_distance_)
+      return *point_feature_distance_;
+    return noise_mode_ ? kNoisePointDistance
+                       : SegmentationParameters{}.point_feature_distance;
   }
-  static constexpr double kNoiseSmoothingRadius = 2.0;
-  static constexpr double kNoisePointDistance = 1.25;
 
-  /** \brief Opacity in cell edges (default 0 = exact visibility). The paper's setting
-   * for noisy scans is kPaperNoiseOpacity with its component joining (on by default,
+  /** \brief Smoothing radius in cells: before the band is built, every point is
+   * projected onto the least-squares plane of its neighbours within this radius
+   * (smoothPoints()); creases are rounded within it. Default 0 = off, or
+   * kNoiseSmoothingRadius (2) in the noise mode, unless set; range
+   * SmoothingParameters::kRadiusRange ([0, 8] cells). */
+  inline void setSmoothingRadius(double cells) { smoothing_radius_ = cells; }
+  /** \brief The radius compute() will use. */
+  inline double getSmoothingRadius() const
+  {
+    if (smoothing_radius_)
+      return *smoothing_radius_;
+    return noise_mode_ ? kNoiseSmoothingRadius : 0.0;
+  }
+
+  /** \brief Noise mode for scans with Gaussian noise up to about half a cell (default
+   * off). At compute time it gives the smoothing radius kNoiseSmoothingRadius (2
+   * cells) and point_feature_distance kNoisePointDistance (1.25 cells: feature points
+   * keep the same 2-cell bound with the noise left along the surface) to whichever of
+   * the two was not set explicitly (setSmoothingRadius(), setPointFeatureDistance()),
+   * whatever the order of the calls. Off: smoothing 0 and point_feature_distance 1
+   * unless set. Noise is in cells: at a finer resolution the same scan is noisier. */
+  inline void setNoiseMode(bool on) { noise_mode_ = on; }
+  inline bool getNoiseMode() const { return noise_mode_; }
+
+  /** \brief Opacity in cell edges (default 0 = exact visibility; range
+   * VisibilityMap::Parameters::kOpacityRange, [0, 64]). The paper's setting for noisy
+   * scans is kPaperNoiseOpacity with its component joining (on by default,
    * SegmentationParameters::join_distance); measured here, the noise mode
    * (setNoiseMode()) does better. */
-  inline void setOpacity(double opacity) { visibility_.opacity = opacity; }
-  inline double getOpacity() const { return visibility_.opacity; }
-  /** \brief The paper's opacity for noise (its Section 6): 3 cell edges. */
-  static constexpr double kPaperNoiseOpacity = 3.0;
+  inline void setOpacity(double opacity) { opacity_ = opacity; }
+  inline double getOpacity() const { return opacity_; }
 
   /** \brief Make the band 6-connected by adding cells (default true). */
   inline void setBandRepair(bool repair) { band_options_.repair = repair; }
   inline bool getBandRepair() const { return band_options_.repair; }
 
-  /** \brief Threads for the visibility map; 0 (default) = all available. */
+  /** \brief Threads for the smoothing and the visibility map; 0 (default) = all
+   * available; at most VisibilityMap::kMaxThreads. Results are identical for any
+   * count. */
   inline void setNumberOfThreads(unsigned int threads)
   {
-    visibility_.threads = static_cast<int>(threads);
+    threads_ = static_cast<int>(threads);
   }
   inline unsigned int getNumberOfThreads() const
   {
-    return static_cast<unsigned int>(visibility_.threads);
+    return static_cast<unsigned int>(threads_);
   }
 
   /** \brief Refuse grids whose estimated memory exceeds this many bytes
@@ -192,30 +273,49 @@ public:
   inline std::uint64_t getMemoryLimit() const { return memory_limit_; }
 
   /** \brief Called during the visibility map with (cells done, cells total), from one
-   * thread at a time (see visfeat::ProgressCallback). */
+   * thread at a time (see visfeat::ProgressCallback); it runs inside an OpenMP region,
+   * so it must not throw. */
   inline void setProgressCallback(const ProgressCallback& progress)
   {
     progress_ = progress;
   }
 
-  /** \brief The grid, band and map of the last successful compute(). */
-  inline const GridSpec& getGrid() const { return band_.grid(); }
-  inline const VoxelBand& getVoxelBand() const { return band_; }
-  inline const FreeSpace& getFreeSpace() const { return free_space_; }
-  inline const VisibilityMap& getVisibilityMap() const { return map_; }
+  /** \brief Keep the whole-grid free-space mask after compute() (default false: it is
+   * released as soon as the visibility map is done; about (2 dims)^3 bits, 20 MiB at
+   * resolution 256, 140 MiB at 512). */
+  inline void setKeepFreeSpace(bool keep) { keep_free_space_ = keep; }
+  inline bool getKeepFreeSpace() const { return keep_free_space_; }
+
   /** \brief Dilation radius of the topology graph's arcs in cells (default -1 = auto:
    * 2 with complete regions, which touch; min_radius otherwise, to cross the valleys
-   * between raw components). See TopologyGraphParameters. */
+   * between raw components; range TopologyGraphParameters::kDilationRadiusRange). See
+   * TopologyGraphParameters. */
   inline void setGraphDilation(int cells) { graph_dilation_ = cells; }
   inline int getGraphDilation() const { return graph_dilation_; }
 
-  /** \brief The topology graph of the last compute(): nodes are regions (with the
-   * centroid and bounds of their points), arcs vertex-edge, edge-face, vertex-face. */
+  /** \brief Results of the last successful compute() (empty before the first one; a
+   * failed compute() leaves them as they were). */
+  inline const GridSpec& getGrid() const { return band_.grid(); }
+  inline const VoxelBand& getVoxelBand() const { return band_; }
+  /** \brief The free-space mask: empty (dims 0) unless setKeepFreeSpace(true). */
+  inline const FreeSpace& getFreeSpace() const { return free_space_; }
+  inline const VisibilityMap& getVisibilityMap() const { return map_; }
+  /** \brief The topology graph: nodes are regions (with the centroid and bounds of
+   * their points), arcs vertex-edge, edge-face, vertex-face. */
   inline const TopologyGraph& getTopologyGraph() const { return graph_; }
-
-  /** \brief Vertex, edge and face regions of the last compute(). */
+  /** \brief Vertex, edge and face regions. */
   inline const FeatureSegmentation& getSegmentation() const { return segmentation_; }
   inline const PhaseTimes& getPhaseTimes() const { return times_; }
+  /** \brief The resolution used and why: with setResolution(0) the estimate from the
+   * point spacing (ResolutionEstimate: spacing, k, queries, extent, clamped, reason);
+   * with a given resolution, that resolution with queries 0 and the reason "set by
+   * setResolution()". */
+  inline const ResolutionEstimate& getResolutionEstimate() const
+  {
+    return resolution_estimate_;
+  }
+  /** \brief Notes on the input, one line each (e.g. a coplanar cloud: one face). */
+  inline const std::vector<std::string>& getNotes() const { return notes_; }
 
   /** \brief Why the last compute() produced an empty output ("" after success). */
   inline const std::string& getErrorMessage() const { return error_; }
@@ -230,42 +330,77 @@ protected:
   using pcl::Feature<PointInT, PointOutT>::k_;
   using pcl::Feature<PointInT, PointOutT>::search_radius_;
 
-  /** \brief Checks input and parameters and builds the grid; no search tree. */
+  /** \brief Checks input and parameters, the shape of the cloud, chooses the
+   * resolution and builds the grid; no search tree. */
   bool initCompute() override;
 
   void computeFeature(PointCloudOut& output) override;
 
 private:
-  /** \brief Marks the cells within one cell (26-neighbourhood) of a skeleton cell: only
-   * their points can be feature points. */
-  void markCellsNearSkeleton();
+  /** \brief What initCompute() settles for computeFeature(): resolved parameters,
+   * grid, resolution estimate, notes. */
+  struct Run
+  {
+    VisibilityMap::Parameters visibility;
+    SmoothingParameters smoothing;
+    SegmentationParameters segmentation;
+    TopologyGraphParameters graph;
+    GridSpec grid;
+    ResolutionEstimate resolution;
+    std::vector<std::string> notes;
+    PhaseTimes times;
+  };
 
-  void refinePointLabel(const PointInT& p,
-                        CellId cell,
-                        std::uint32_t& label,
-                        FeatureClass& cls) const;
+  /** \brief Everything a compute() produces, built aside and moved into the members on
+   * success. */
+  struct Results
+  {
+    VoxelBand band;
+    FreeSpace free_space;
+    VisibilityMap map;
+    FeatureSegmentation segmentation;
+    TopologyGraph graph;
+  };
 
-  void buildGraph(const PointCloudOut& output);
+  Run prepare() const;
+  void checkMemoryBudget(const Run& run) const;
+  typename PointCloudIn::ConstPtr smoothedSurface(Run& run) const;
+  Results computeResults(Run& run, PointCloudOut& output) const;
+  void labelPoints(const Results& results,
+                   const Run& run,
+                   const PointCloudIn& surface,
+                   PointCloudOut& output) const;
+  void buildGraph(Results& results, const Run& run, const PointCloudOut& output) const;
 
   bool fail(const std::string& message);
 
-  int resolution_ = 256;
+  // Settings.
+  int resolution_ = GridSpec::kDefaultResolution;
+  int max_radius_ = kAutoMaxRadius;
+  double opacity_ = 0.0;
+  int threads_ = 0;
+  bool noise_mode_ = false;
+  std::optional<double> smoothing_radius_;
+  std::optional<double> point_feature_distance_;
   VoxelBand::Options band_options_;
-  VisibilityMap::Parameters visibility_;
-  SmoothingParameters smoothing_{0.0, 6, 0};
   SegmentationParameters segmentation_parameters_;
   std::uint64_t memory_limit_ = 0;
   ProgressCallback progress_;
+  int graph_dilation_ = -1;
+  bool keep_free_space_ = false;
 
-  GridSpec grid_;
+  // Between initCompute() and computeFeature().
+  std::unique_ptr<Run> run_;
+
+  // Results of the last successful compute().
   VoxelBand band_;
   FreeSpace free_space_;
   VisibilityMap map_;
   FeatureSegmentation segmentation_;
-  std::vector<char> near_skeleton_;
-  int graph_dilation_ = -1;
   TopologyGraph graph_;
   PhaseTimes times_;
+  ResolutionEstimate resolution_estimate_;
+  std::vector<std::string> notes_;
   std::string error_;
 };
 

@@ -2,19 +2,23 @@
 
 #include <visfeat/core/common/error.h>
 #include <visfeat/core/common/memory_budget.h>
+#include <visfeat/core/common/threads.h>
+#include <visfeat/core/grid/cloud_shape.h>
+#include <visfeat/core/segmentation/point_labeling.h>
+#include <visfeat/impl/resolution_estimation.hpp>
 #include <visfeat/impl/voxel_band_from_cloud.hpp>
+#include <visfeat/resolution_estimation.h>
 #include <visfeat/visibility_feature_estimation.h>
 #include <visfeat/voxel_band_from_cloud.h>
 
 #include <pcl/common/point_tests.h>
-
-#include <visfeat/core/common/threads.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
 #include <new>
+#include <sstream>
 
 namespace visfeat {
 namespace detail {
@@ -25,6 +29,15 @@ millisecondsSince(std::chrono::steady_clock::time_point start)
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() -
                                                    start)
     .count();
+}
+
+/** \brief A message on one line (newlines of foreign exceptions become spaces). */
+inline std::string
+oneLine(std::string message)
+{
+  std::replace(message.begin(), message.end(), '\n', ' ');
+  std::replace(message.begin(), message.end(), '\r', ' ');
+  return message;
 }
 
 } // namespace detail
@@ -43,7 +56,7 @@ bool
 VisibilityFeatureEstimation<PointInT, PointOutT>::initCompute()
 {
   error_.clear();
-  times_ = PhaseTimes{};
+  run_.reset();
   if (!input_)
     return fail("no input cloud: call setInputCloud() first");
   if (!pcl::PCLBase<PointInT>::initCompute())
@@ -56,277 +69,268 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::initCompute()
     fake_surface_ = true;
     surface_ = input_;
   }
+  std::string problem;
   try {
-    const auto start = std::chrono::steady_clock::now();
-    VisibilityMap::validate(visibility_);
-    FeatureSegmentation::validate(segmentation_parameters_, visibility_.max_radius);
-    if (!(smoothing_.radius >= 0.0 && smoothing_.radius <= 8.0))
-      throw Error("smoothing radius " + std::to_string(smoothing_.radius) +
-                  " is out of range [0, 8] (cells; 0 = off)");
-    grid_ = gridForCloud(*surface_, resolution_);
-    // Refuse before allocating: the subcell mask dominates; cells are at most the
-    // points.
-    const std::size_t points = surface_->size();
-    const std::size_t cells =
-      static_cast<std::size_t>(std::min<std::uint64_t>(points, grid_.cellCount()));
-    const int threads = resolveThreads(visibility_.threads);
-    const std::uint64_t octree_bytes = std::uint64_t{160} * cells + 4 * points;
-    const std::uint64_t estimate =
-      FreeSpace::estimateBytes(grid_) + VoxelBand::estimateBytes(grid_, cells, points) +
-      octree_bytes + std::uint64_t{4} * cells * static_cast<std::uint64_t>(threads) +
-      (smoothing_.radius > 0.0 ? (sizeof(PointInT) + 40) * std::uint64_t{points} : 0);
-    checkMemory(estimate, memory_limit_,
-                "a grid of " + std::to_string(grid_.dims.x()) + "x" +
-                  std::to_string(grid_.dims.y()) + "x" +
-                  std::to_string(grid_.dims.z()) + " cells");
-    times_.grid_ms = detail::millisecondsSince(start);
+    run_ = std::make_unique<Run>(prepare());
   } catch (const Error& e) {
-    this->deinitCompute();
-    return fail(e.what());
+    problem = e.what();
+  } catch (const std::bad_alloc&) {
+    problem = "out of memory while checking the cloud";
+  } catch (const std::exception& e) {
+    problem = "unexpected error: " + detail::oneLine(e.what());
   }
+  if (!problem.empty()) {
+    run_.reset();
+    this->deinitCompute();
+    return fail(problem);
+  }
+  for (const std::string& note : run_->notes)
+    PCL_WARN("[visfeat::%s::compute] %s\n", getClassName().c_str(), note.c_str());
   return true;
 }
 
 template <typename PointInT, typename PointOutT>
-void
-VisibilityFeatureEstimation<PointInT, PointOutT>::markCellsNearSkeleton()
+typename VisibilityFeatureEstimation<PointInT, PointOutT>::Run
+VisibilityFeatureEstimation<PointInT, PointOutT>::prepare() const
 {
-  const std::vector<char>& skeleton = segmentation_.skeleton();
-  near_skeleton_.assign(skeleton.size(), 0);
-  for (std::size_t c = 0; c < skeleton.size(); ++c) {
-    if (!skeleton[c])
-      continue;
-    const CellCoord at = band_.coord(static_cast<CellId>(c));
-    for (int dz = -2; dz <= 2; ++dz)
-      for (int dy = -2; dy <= 2; ++dy)
-        for (int dx = -2; dx <= 2; ++dx) {
-          const CellId n = band_.find(at + CellCoord(dx, dy, dz));
-          if (n != kNoCell)
-            near_skeleton_[static_cast<std::size_t>(n)] = 1;
-        }
+  auto start = std::chrono::steady_clock::now();
+  Run run;
+  // Parameters as compute() uses them: auto max_radius, the noise mode's values.
+  checkRange("min_radius", getMinRadius(), ComponentParameters::kMinRadiusRange,
+             "rings");
+  run.visibility.max_radius = getMaxRadius();
+  run.visibility.opacity = opacity_;
+  run.visibility.threads = threads_;
+  VisibilityMap::validate(run.visibility);
+  run.segmentation = getSegmentationParameters();
+  run.segmentation.validate(run.visibility.max_radius);
+  run.smoothing.radius = getSmoothingRadius();
+  run.smoothing.threads = threads_;
+  run.smoothing.validate();
+  const bool touching = !run.segmentation.raw && run.segmentation.complete_regions;
+  run.graph.dilation_radius =
+    graph_dilation_ >= 0 ? graph_dilation_
+                         : (touching ? TopologyGraphParameters::kDefaultDilationRadius
+                                     : run.segmentation.components.min_radius);
+  TopologyGraph::validate(run.graph);
+  if (resolution_ != kAutomaticResolution &&
+      !GridSpec::kResolutionRange.contains(resolution_)) {
+    std::ostringstream msg;
+    msg << "resolution " << resolution_ << " is out of range: " << kAutomaticResolution
+        << " (automatic) or [" << GridSpec::kMinResolution << ", "
+        << GridSpec::kMaxResolution
+        << "] (cells along the longest side of the bounding box)";
+    throw Error(msg.str());
   }
+
+  // The shape: refuse clouds without a surface, note flat ones; the resolution.
+  const CloudShape shape = cloudShapeOf(*surface_);
+  std::string problem = shapeProblem(shape, 0);
+  if (!problem.empty())
+    throw Error(problem);
+  int resolution = resolution_;
+  if (resolution == kAutomaticResolution) {
+    if (hasExtent(shape)) {
+      try {
+        run.resolution = estimateResolution(*surface_, shape.extent);
+      } catch (const Error& e) {
+        throw Error(std::string(e.what()) + "; set the resolution (setResolution())");
+      }
+      resolution = run.resolution.resolution;
+    } else {
+      resolution = GridSpec::kMinResolution; // the grid refuses the cloud, saying why
+    }
+  } else {
+    run.resolution.resolution = resolution;
+    run.resolution.extent = shape.extent;
+    run.resolution.reason = "set by setResolution()";
+  }
+  problem = shapeProblem(shape, resolution);
+  if (!problem.empty())
+    throw Error(problem);
+  const std::string note = shapeNote(shape);
+  if (!note.empty())
+    run.notes.push_back(note);
+  run.times.shape_ms = detail::millisecondsSince(start);
+
+  start = std::chrono::steady_clock::now();
+  run.grid = gridForCloud(*surface_, resolution);
+  checkMemoryBudget(run);
+  run.times.grid_ms = detail::millisecondsSince(start);
+  return run;
 }
 
 template <typename PointInT, typename PointOutT>
 void
-VisibilityFeatureEstimation<PointInT, PointOutT>::refinePointLabel(
-  const PointInT& p, CellId cell, std::uint32_t& label, FeatureClass& cls) const
+VisibilityFeatureEstimation<PointInT, PointOutT>::checkMemoryBudget(
+  const Run& run) const
 {
-  // Cells are coarser than the points, and the cores of obtuse edges are several cells
-  // wide: a point is a feature point when it lies within point_feature_distance of the
-  // middle line of a skeleton around it (the nearest one names its region); otherwise
-  // it belongs to its face cell, or to the closest face cell around it.
-  const std::vector<char>& skeleton = segmentation_.skeleton();
-  const double limit = segmentation_parameters_.point_feature_distance;
-  if (limit <= 0.0 || skeleton.empty() || near_skeleton_.empty() ||
-      !near_skeleton_[static_cast<std::size_t>(cell)])
-    return;
-  const GridSpec& grid = band_.grid();
-  const Eigen::Vector3d q =
-    (Eigen::Vector3d(p.x, p.y, p.z) - grid.origin) / grid.cell_size; // cell units
-  const CellCoord c = band_.coord(cell);
-  const std::vector<Eigen::Vector3f>& centres = segmentation_.skeletonCentres();
-  const std::vector<Eigen::Vector3f>& tangents = segmentation_.skeletonTangents();
-  // Each skeleton cell stands for a short piece of its middle line (its centre, +-1.5
-  // cells along its direction), so points in a gap of up to 3 cells between skeleton
-  // cells (noise thins the ridge) still find the line.
-  constexpr double kHalfPiece = 1.5;
-  // A vertex's skeleton is a few cells at its corner, where the line pieces of its
-  // edges end too: a point within reach of both goes to the vertex, or the corner might
-  // keep no point at all.
-  double near_skeleton = std::numeric_limits<double>::infinity();
-  CellId nearest_skeleton = kNoCell;
-  double near_vertex = std::numeric_limits<double>::infinity();
-  CellId nearest_vertex = kNoCell;
-  double near_face = std::numeric_limits<double>::infinity();
-  std::uint32_t face = 0;
-  for (int dz = -2; dz <= 2; ++dz)
-    for (int dy = -2; dy <= 2; ++dy)
-      for (int dx = -2; dx <= 2; ++dx) {
-        const CellId n = band_.find(c + CellCoord(dx, dy, dz));
-        if (n == kNoCell)
-          continue;
-        if (skeleton[static_cast<std::size_t>(n)]) {
-          const Eigen::Vector3d d =
-            q - centres[static_cast<std::size_t>(n)].template cast<double>();
-          const Eigen::Vector3d u =
-            tangents[static_cast<std::size_t>(n)].template cast<double>();
-          const double along = std::clamp(d.dot(u), -kHalfPiece, kHalfPiece);
-          const double distance = (d - along * u).norm();
-          if (distance < near_skeleton) {
-            near_skeleton = distance;
-            nearest_skeleton = n;
-          }
-          if (distance < near_vertex &&
-              segmentation_.cellClass(n) == FeatureClass::kVertex) {
-            near_vertex = distance;
-            nearest_vertex = n;
-          }
-        }
-        if (std::abs(dx) <= 1 && std::abs(dy) <= 1 && std::abs(dz) <= 1 &&
-            segmentation_.cellClass(n) == FeatureClass::kFace) {
-          const double d = (band_.coord(n).template cast<double>() +
-                            Eigen::Vector3d::Constant(0.5) - q)
-                             .norm();
-          if (d < near_face) {
-            near_face = d;
-            face = segmentation_.cellLabels()[static_cast<std::size_t>(n)];
-          }
-        }
-      }
-  if (near_vertex <= limit)
-    nearest_skeleton = nearest_vertex;
-  if (near_skeleton <= limit) {
-    label = segmentation_.cellLabels()[static_cast<std::size_t>(nearest_skeleton)];
-    cls = segmentation_.cellClass(nearest_skeleton);
-  } else if ((cls == FeatureClass::kEdge || cls == FeatureClass::kVertex) &&
-             face != 0) {
-    label = face;
-    cls = FeatureClass::kFace;
+  // Refuse before allocating: the subcell mask dominates; cells are at most the points.
+  const GridSpec& grid = run.grid;
+  const std::size_t points = surface_->size();
+  const std::size_t cells =
+    static_cast<std::size_t>(std::min<std::uint64_t>(points, grid.cellCount()));
+  const int threads = resolveThreads(run.visibility.threads);
+  const std::uint64_t octree_bytes = std::uint64_t{160} * cells + 4 * points;
+  const std::uint64_t estimate =
+    FreeSpace::estimateBytes(grid) + VoxelBand::estimateBytes(grid, cells, points) +
+    octree_bytes + std::uint64_t{4} * cells * static_cast<std::uint64_t>(threads) +
+    (run.smoothing.radius > 0.0 ? (sizeof(PointInT) + 40) * std::uint64_t{points} : 0);
+  checkMemory(estimate, memory_limit_,
+              "a grid of " + std::to_string(grid.dims.x()) + "x" +
+                std::to_string(grid.dims.y()) + "x" + std::to_string(grid.dims.z()) +
+                " cells");
+}
+
+template <typename PointInT, typename PointOutT>
+typename VisibilityFeatureEstimation<PointInT, PointOutT>::PointCloudIn::ConstPtr
+VisibilityFeatureEstimation<PointInT, PointOutT>::smoothedSurface(Run& run) const
+{
+  if (!(run.smoothing.radius > 0.0))
+    return surface_;
+  const auto start = std::chrono::steady_clock::now();
+  std::vector<Eigen::Vector3f> points(surface_->size());
+  for (std::size_t i = 0; i < points.size(); ++i)
+    points[i] = (*surface_)[i].getVector3fMap();
+  points = smoothPoints(points, run.grid, run.smoothing);
+  auto smoothed = std::make_shared<pcl::PointCloud<PointInT>>(*surface_);
+  for (std::size_t i = 0; i < points.size(); ++i)
+    (*smoothed)[i].getVector3fMap() = points[i];
+  run.times.smoothing_ms = detail::millisecondsSince(start);
+  return smoothed;
+}
+
+template <typename PointInT, typename PointOutT>
+void
+VisibilityFeatureEstimation<PointInT, PointOutT>::labelPoints(
+  const Results& results,
+  const Run& run,
+  const PointCloudIn& surface,
+  PointCloudOut& output) const
+{
+  const PointLabeling labeling(results.band, results.segmentation,
+                               run.segmentation.point_feature_distance);
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  const GridSpec& grid = results.band.grid();
+  bool dense = true;
+  for (std::size_t i = 0; i < indices_->size(); ++i) {
+    const auto index = static_cast<std::size_t>((*indices_)[i]);
+    const PointInT& p = (*input_)[index];
+    // The point as the band saw it (smoothed in noise mode) and its cell: the band's
+    // own record for points of the band's cloud, else the cell it falls in.
+    const PointInT& seen = fake_surface_ ? surface[index] : p;
+    CellId cell = kNoCell;
+    if (pcl::isXYZFinite(p))
+      cell = fake_surface_
+               ? results.band.pointCell()[index]
+               : results.band.find(grid.cellOf(Eigen::Vector3d(p.x, p.y, p.z)));
+    PointOutT& out = output[i];
+    out.x = p.x;
+    out.y = p.y;
+    out.z = p.z;
+    out.visibility_radius =
+      cell == kNoCell ? nan : static_cast<float>(results.map.radius(cell));
+    const PointLabel label =
+      labeling.labelOf(grid.toCellUnits(Eigen::Vector3d(seen.x, seen.y, seen.z)), cell);
+    out.label = label.label;
+    out.feature_class = static_cast<std::uint8_t>(label.feature_class);
+    dense = dense && cell != kNoCell;
   }
+  output.is_dense = dense;
 }
 
 template <typename PointInT, typename PointOutT>
 void
 VisibilityFeatureEstimation<PointInT, PointOutT>::buildGraph(
-  const PointCloudOut& output)
+  Results& results, const Run& run, const PointCloudOut& output) const
 {
-  const std::vector<Region>& regions = segmentation_.regions();
+  const std::vector<Region>& regions = results.segmentation.regions();
   std::vector<FeatureClass> classes(regions.size());
   for (std::size_t r = 0; r < regions.size(); ++r)
     classes[r] = regions[r].feature_class;
-  TopologyGraphParameters parameters;
-  const bool touching =
-    !segmentation_parameters_.raw && segmentation_parameters_.complete_regions;
-  parameters.dilation_radius =
-    graph_dilation_ >= 0
-      ? graph_dilation_
-      : (touching ? 2 : segmentation_parameters_.components.min_radius);
-  graph_ = TopologyGraph::build(band_, segmentation_.cellLabels(), classes, parameters);
+  results.graph = TopologyGraph::build(results.band, results.segmentation.cellLabels(),
+                                       classes, run.graph);
+  // Node geometry from the labelled output points themselves.
+  RegionPointGeometry geometry(regions.size());
+  for (const PointOutT& p : output.points)
+    geometry.add(p.label, Eigen::Vector3d(p.x, p.y, p.z));
+  geometry.applyTo(results.graph);
+}
 
-  // Node geometry from the labeled output points themselves.
-  struct Sum
-  {
-    std::uint64_t n = 0;
-    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-    Eigen::Vector3d min =
-      Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
-    Eigen::Vector3d max =
-      -Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
-  };
-  std::vector<Sum> sums(regions.size());
-  for (const PointOutT& p : output.points) {
-    if (p.label == 0 || p.label > regions.size() || !pcl::isXYZFinite(p))
-      continue;
-    Sum& s = sums[p.label - 1];
-    const Eigen::Vector3d v(p.x, p.y, p.z);
-    ++s.n;
-    s.sum += v;
-    s.min = s.min.cwiseMin(v);
-    s.max = s.max.cwiseMax(v);
-  }
-  for (std::size_t r = 0; r < regions.size(); ++r)
-    if (sums[r].n > 0)
-      graph_.setPointGeometry(static_cast<std::uint32_t>(r + 1), sums[r].n,
-                              sums[r].sum / static_cast<double>(sums[r].n), sums[r].min,
-                              sums[r].max);
+template <typename PointInT, typename PointOutT>
+typename VisibilityFeatureEstimation<PointInT, PointOutT>::Results
+VisibilityFeatureEstimation<PointInT, PointOutT>::computeResults(
+  Run& run, PointCloudOut& output) const
+{
+  using Clock = std::chrono::steady_clock;
+  Results results;
+  // Noise mode: the band (and the per-point decision) use the smoothed surface.
+  const typename PointCloudIn::ConstPtr surface = smoothedSurface(run);
+
+  auto start = Clock::now();
+  results.band = buildVoxelBand(*surface, run.grid, band_options_);
+  run.times.band_ms = detail::millisecondsSince(start);
+
+  start = Clock::now();
+  results.free_space = FreeSpace(results.band);
+  run.times.free_space_ms = detail::millisecondsSince(start);
+
+  start = Clock::now();
+  results.map =
+    VisibilityMap::compute(results.band, results.free_space, run.visibility, progress_);
+  if (!keep_free_space_)
+    results.free_space = FreeSpace(); // the whole-grid mask is no longer needed
+  run.times.visibility_ms = detail::millisecondsSince(start);
+
+  start = Clock::now();
+  results.segmentation =
+    FeatureSegmentation::compute(results.band, results.map, run.segmentation);
+  run.times.segmentation_ms = detail::millisecondsSince(start);
+
+  start = Clock::now();
+  labelPoints(results, run, *surface, output);
+  run.times.output_ms = detail::millisecondsSince(start);
+
+  start = Clock::now();
+  buildGraph(results, run, output);
+  run.times.graph_ms = detail::millisecondsSince(start);
+  return results;
 }
 
 template <typename PointInT, typename PointOutT>
 void
 VisibilityFeatureEstimation<PointInT, PointOutT>::computeFeature(PointCloudOut& output)
 {
-  using Clock = std::chrono::steady_clock;
-  try {
-    auto start = Clock::now();
-    // Noise mode: the band (and the per-point decision) use the smoothed surface.
-    typename PointCloudIn::ConstPtr surface = surface_;
-    if (smoothing_.radius > 0.0) {
-      std::vector<Eigen::Vector3f> points(surface_->size());
-      for (std::size_t i = 0; i < points.size(); ++i)
-        points[i] = (*surface_)[i].getVector3fMap();
-      SmoothingParameters smoothing = smoothing_;
-      smoothing.threads = visibility_.threads;
-      points = smoothPoints(points, grid_, smoothing);
-      auto smoothed = std::make_shared<pcl::PointCloud<PointInT>>(*surface_);
-      for (std::size_t i = 0; i < points.size(); ++i)
-        (*smoothed)[i].getVector3fMap() = points[i];
-      surface = smoothed;
-      times_.smoothing_ms = detail::millisecondsSince(start);
-      start = Clock::now();
+  std::string problem;
+  if (!run_) {
+    problem = "compute() was not prepared: call compute(), not computeFeature()";
+  } else {
+    try {
+      Run run = std::move(*run_);
+      run_.reset();
+      Results results = computeResults(run, output);
+      // Success: the new results replace the previous ones.
+      band_ = std::move(results.band);
+      free_space_ = std::move(results.free_space);
+      map_ = std::move(results.map);
+      segmentation_ = std::move(results.segmentation);
+      graph_ = std::move(results.graph);
+      times_ = run.times;
+      resolution_estimate_ = std::move(run.resolution);
+      notes_ = std::move(run.notes);
+      return;
+    } catch (const Error& e) {
+      problem = e.what();
+    } catch (const std::bad_alloc&) {
+      problem = "out of memory: lower the resolution";
+    } catch (const std::exception& e) {
+      problem = "unexpected error: " + detail::oneLine(e.what());
     }
-    band_ = buildVoxelBand(*surface, grid_, band_options_);
-    times_.band_ms = detail::millisecondsSince(start);
-
-    start = Clock::now();
-    free_space_ = FreeSpace(band_);
-    times_.free_space_ms = detail::millisecondsSince(start);
-
-    start = Clock::now();
-    map_ = VisibilityMap::compute(band_, free_space_, visibility_, progress_);
-    times_.visibility_ms = detail::millisecondsSince(start);
-
-    start = Clock::now();
-    segmentation_ = FeatureSegmentation::compute(band_, map_, segmentation_parameters_);
-    times_.segmentation_ms = detail::millisecondsSince(start);
-
-    start = Clock::now();
-    markCellsNearSkeleton();
-    const float nan = std::numeric_limits<float>::quiet_NaN();
-    const GridSpec& grid = band_.grid();
-    auto cellOf = [&](std::size_t index, const PointInT& p) -> CellId {
-      if (fake_surface_)
-        return band_.pointCell()[index];
-      // Same arithmetic as the octree's keys, so a point of the surface finds its cell.
-      CellCoord c;
-      for (int a = 0; a < 3; ++a) {
-        const double u =
-          (static_cast<double>(p.data[a]) - grid.origin[a]) / grid.cell_size;
-        if (!(u >= 0.0 && u < grid.dims[a]))
-          return kNoCell;
-        c[a] = static_cast<int>(u);
-      }
-      return band_.find(c);
-    };
-    bool dense = true;
-    for (std::size_t i = 0; i < indices_->size(); ++i) {
-      const auto index = static_cast<std::size_t>((*indices_)[i]);
-      const PointInT& p = (*input_)[index];
-      // The point as the band saw it (smoothed in noise mode).
-      const PointInT& seen = fake_surface_ ? (*surface)[index] : p;
-      PointOutT& out = output[i];
-      out.x = p.x;
-      out.y = p.y;
-      out.z = p.z;
-      const CellId cell = pcl::isXYZFinite(p) ? cellOf(index, p) : kNoCell;
-      out.visibility_radius =
-        cell == kNoCell ? nan : static_cast<float>(map_.radius(cell));
-      std::uint32_t label =
-        cell == kNoCell ? 0u
-                        : segmentation_.cellLabels()[static_cast<std::size_t>(cell)];
-      FeatureClass cls =
-        cell == kNoCell ? FeatureClass::kNone : segmentation_.cellClass(cell);
-      if (cell != kNoCell)
-        refinePointLabel(seen, cell, label, cls);
-      out.label = label;
-      out.feature_class = static_cast<std::uint8_t>(cls);
-      dense = dense && cell != kNoCell;
-    }
-    output.is_dense = dense;
-    times_.output_ms = detail::millisecondsSince(start);
-
-    start = Clock::now();
-    buildGraph(output);
-    times_.graph_ms = detail::millisecondsSince(start);
-  } catch (const Error& e) {
-    fail(e.what());
-    output.width = output.height = 0;
-    output.clear();
-  } catch (const std::bad_alloc&) {
-    fail("out of memory: lower the resolution");
-    output.width = output.height = 0;
-    output.clear();
   }
+  run_.reset();
+  fail(problem);
+  output.width = output.height = 0;
+  output.clear();
 }
 
 } // namespace visfeat

@@ -83,11 +83,10 @@ buildVoxelBand(const pcl::PointCloud<PointT>& cloud,
   constexpr int kBrickShift = 3;
   const Eigen::Vector3i bricks = (grid.dims.array() + 7) / 8;
   auto brickOf = [&](const PointT& p) {
+    const CellCoord c = grid.cellOf(Eigen::Vector3d(p.x, p.y, p.z));
     std::size_t key = 0;
     for (int a = 2; a >= 0; --a) {
-      const double u =
-        (static_cast<double>(p.data[a]) - grid.origin[a]) / grid.cell_size;
-      const int b = std::clamp(static_cast<int>(u) >> kBrickShift, 0, bricks[a] - 1);
+      const int b = std::clamp(c[a], 0, grid.dims[a] - 1) >> kBrickShift;
       key = key * static_cast<std::size_t>(bricks[a]) + static_cast<std::size_t>(b);
     }
     return key;
@@ -110,6 +109,9 @@ buildVoxelBand(const pcl::PointCloud<PointT>& cloud,
   std::vector<std::int32_t> point_occupied(cloud.size(), -1);
   const double scale = OccupiedCell::kOffsetScale / grid.cell_size;
   for (auto it = octree.leaf_depth_begin(); it != octree.leaf_depth_end(); ++it) {
+    // The octree computes its keys as GridSpec::cellOf does (same origin and cell
+    // size, truncation of (p - origin) / cell_size in double): a key is the cell of
+    // its points.
     const pcl::octree::OctreeKey& key = it.getCurrentOctreeKey();
     OccupiedCell cell;
     cell.coord = CellCoord(static_cast<int>(key.x), static_cast<int>(key.y),

@@ -16,22 +16,27 @@
 
 namespace visfeat {
 
+void
+SmoothingParameters::validate() const
+{
+  checkRange("smoothing radius", radius, kRadiusRange, "cells; 0 = off");
+  checkRange("smoothing min_neighbours", min_neighbours, kMinNeighboursRange, "points");
+  checkRange("smoothing threads", threads, kThreadsRange, "0 = all available");
+}
+
 std::vector<Eigen::Vector3f>
 smoothPoints(const std::vector<Eigen::Vector3f>& points,
              const GridSpec& grid,
              const SmoothingParameters& parameters)
 {
-  if (!(parameters.radius > 0.0 && parameters.radius <= 8.0)) {
+  if (!(parameters.radius > 0.0 &&
+        parameters.radius <= SmoothingParameters::kRadiusRange.max)) {
     std::ostringstream msg;
-    msg << "smoothing radius " << parameters.radius
-        << " is out of range (0, 8] (cells)";
+    msg << "smoothing radius " << parameters.radius << " is out of range (0, "
+        << SmoothingParameters::kRadiusRange.max << "] (cells)";
     throw Error(msg.str());
   }
-  if (parameters.threads < 0) {
-    std::ostringstream msg;
-    msg << "smoothing threads " << parameters.threads << " is negative";
-    throw Error(msg.str());
-  }
+  parameters.validate();
   const std::size_t n = points.size();
   // Bucket the points by cell: cell ids in order of first appearance, points sorted by
   // (cell, index), so each cell's points are one range and the order is fixed.
@@ -41,9 +46,8 @@ smoothPoints(const std::vector<Eigen::Vector3f>& points,
   for (std::size_t i = 0; i < n; ++i) {
     if (!points[i].allFinite())
       continue;
-    const Eigen::Vector3d u = (points[i].cast<double>() - grid.origin) / grid.cell_size;
-    const CellCoord c = u.array().floor().cast<int>().matrix();
-    if (!((c.array() >= 0).all() && (c.array() < grid.dims.array()).all()))
+    const CellCoord c = grid.cellOf(points[i].cast<double>());
+    if (!grid.contains(c))
       throw Error("smoothing: a point lies outside the grid");
     CellId id = index.find(c);
     if (id == kNoCell) {
@@ -78,8 +82,7 @@ smoothPoints(const std::vector<Eigen::Vector3f>& points,
     if (cell_of[i] == kNoCell)
       continue;
     const Eigen::Vector3d p = points[i].cast<double>();
-    const CellCoord at =
-      ((p - grid.origin) / grid.cell_size).array().floor().cast<int>().matrix();
+    const CellCoord at = grid.cellOf(p);
     // Mean and scatter about p (shifted, for precision), in a fixed order.
     Eigen::Vector3d sum = Eigen::Vector3d::Zero();
     Eigen::Matrix3d outer = Eigen::Matrix3d::Zero();

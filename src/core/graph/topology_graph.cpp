@@ -81,18 +81,11 @@ lowerExtension(const std::string& path)
 void
 TopologyGraph::validate(const TopologyGraphParameters& p)
 {
-  if (p.dilation_radius < 0 ||
-      p.dilation_radius > TopologyGraphParameters::kMaxDilationRadius) {
-    std::ostringstream msg;
-    msg << "dilation_radius " << p.dilation_radius << " is out of range [0, "
-        << TopologyGraphParameters::kMaxDilationRadius << "] (cells)";
-    throw Error(msg.str());
-  }
-  if (!(p.min_face_contact >= 0.0 && p.min_face_contact <= 1.0)) {
-    std::ostringstream msg;
-    msg << "min_face_contact " << p.min_face_contact << " is out of range [0, 1]";
-    throw Error(msg.str());
-  }
+  checkRange("dilation_radius", p.dilation_radius,
+             TopologyGraphParameters::kDilationRadiusRange, "cells");
+  checkRange("min_face_contact", p.min_face_contact,
+             TopologyGraphParameters::kMinFaceContactRange,
+             "fraction of the strongest face contact");
 }
 
 TopologyGraph

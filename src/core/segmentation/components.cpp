@@ -6,24 +6,25 @@
 namespace visfeat {
 
 void
+ComponentParameters::validate(int max_radius) const
+{
+  if (!kMinRadiusRange.contains(min_radius) || min_radius > max_radius) {
+    std::ostringstream msg;
+    msg << "min_radius " << min_radius << " is out of range [" << kMinRadiusRange.min
+        << ", max_radius = " << max_radius
+        << "] (rings; raise max_radius to at least min_radius)";
+    throw Error(msg.str());
+  }
+  checkRange("vertex_max_cells", vertex_max_cells, kVertexMaxCellsRange, "cells");
+  checkRange("dimensionality", dimensionality, kDimensionalityRange,
+             "mean same-component 6-neighbours");
+  checkRange("face_min_depth", face_min_depth, kFaceMinDepthRange, "cells");
+}
+
+void
 ComponentSet::validate(const ComponentParameters& p, int max_radius)
 {
-  std::ostringstream msg;
-  if (p.min_radius < 1 || p.min_radius > max_radius)
-    msg << "min_radius " << p.min_radius
-        << " is out of range [1, max_radius = " << max_radius
-        << "] (rings; raise max_radius to at least min_radius)";
-  else if (p.vertex_max_cells < 0 || p.vertex_max_cells > 100000)
-    msg << "vertex_max_cells " << p.vertex_max_cells
-        << " is out of range [0, 100000] (cells)";
-  else if (!(p.dimensionality >= 0.0 && p.dimensionality <= 6.0))
-    msg << "dimensionality " << p.dimensionality
-        << " is out of range [0, 6] (mean same-component 6-neighbours)";
-  else if (p.face_min_depth < 1 || p.face_min_depth > 1000)
-    msg << "face_min_depth " << p.face_min_depth
-        << " is out of range [1, 1000] (cells)";
-  if (!msg.str().empty())
-    throw Error(msg.str());
+  p.validate(max_radius);
 }
 
 ComponentSet

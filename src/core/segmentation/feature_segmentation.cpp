@@ -6,7 +6,6 @@
 #include <visfeat/core/common/error.h>
 #include <visfeat/core/segmentation/feature_segmentation.h>
 
-#include <sstream>
 
 namespace visfeat {
 namespace segmentation {
@@ -58,34 +57,7 @@ numberRegions(std::vector<std::uint32_t>& labels,
 void
 FeatureSegmentation::validate(const SegmentationParameters& p, int max_radius)
 {
-  ComponentSet::validate(p.components, max_radius);
-  if (!(p.point_feature_distance >= 0.0 && p.point_feature_distance <= 10.0)) {
-    std::ostringstream msg;
-    msg << "point_feature_distance " << p.point_feature_distance
-        << " is out of range [0, 10] (cells)";
-    throw Error(msg.str());
-  }
-  if (p.vertex_reach < 1 || p.vertex_reach > 1000) {
-    std::ostringstream msg;
-    msg << "vertex_reach " << p.vertex_reach << " is out of range [1, 1000] (cells)";
-    throw Error(msg.str());
-  }
-  if (p.join_distance < 0 || p.join_distance > 1000) {
-    std::ostringstream msg;
-    msg << "join_distance " << p.join_distance << " is out of range [0, 1000] (cells)";
-    throw Error(msg.str());
-  }
-  if (p.feature_width < 0 || p.feature_width > 1000) {
-    std::ostringstream msg;
-    msg << "feature_width " << p.feature_width << " is out of range [0, 1000] (cells)";
-    throw Error(msg.str());
-  }
-  if (p.min_piece_cells < 0 || p.min_piece_cells > 1000000) {
-    std::ostringstream msg;
-    msg << "min_piece_cells " << p.min_piece_cells
-        << " is out of range [0, 1000000] (cells)";
-    throw Error(msg.str());
-  }
+  p.validate(max_radius);
 }
 
 std::array<std::size_t, 4>

@@ -8,7 +8,6 @@
 
 #include <atomic>
 #include <cmath>
-#include <sstream>
 
 namespace visfeat {
 namespace {
@@ -63,18 +62,9 @@ radiusOf(CellId c,
 void
 VisibilityMap::validate(const Parameters& p)
 {
-  std::ostringstream msg;
-  if (p.max_radius < 1 || p.max_radius > kMaxRadius)
-    msg << "max_radius " << p.max_radius << " is out of range [1, " << kMaxRadius
-        << "] (rings)";
-  else if (!std::isfinite(p.opacity) || p.opacity < 0.0 || p.opacity > kMaxOpacity)
-    msg << "opacity " << p.opacity << " is out of range [0, " << kMaxOpacity
-        << "] (cell edges)";
-  else if (p.threads < 0 || p.threads > kMaxThreads)
-    msg << "threads " << p.threads << " is out of range [0, " << kMaxThreads
-        << "] (0 = all available)";
-  if (!msg.str().empty())
-    throw Error(msg.str());
+  checkRange("max_radius", p.max_radius, Parameters::kMaxRadiusRange, "rings");
+  checkRange("opacity", p.opacity, Parameters::kOpacityRange, "cell edges");
+  checkRange("threads", p.threads, Parameters::kThreadsRange, "0 = all available");
 }
 
 VisibilityMap

@@ -2,6 +2,7 @@
 
 #include <visfeat/core/band/voxel_band.h>
 #include <visfeat/core/common/feature_class.h>
+#include <visfeat/core/common/parameters.h>
 #include <visfeat/core/grid/grid_spec.h>
 
 #include <boost/graph/adjacency_list.hpp>
@@ -61,7 +62,7 @@ struct TopologyGraphParameters
    *   neighbours; use at least min_radius (e.g. min_radius + 2), and keep it below
    *   the length of the shortest edge, or regions that are not incident get joined.
    */
-  int dilation_radius = 2;
+  int dilation_radius = kDefaultDilationRadius;
   /** \brief An edge-face arc needs the edge's dilation to reach at least this fraction
    * of the cells it reaches of its strongest face. A true incident face touches the
    * edge along its whole length; the third face of a corner only near the edge's
@@ -74,7 +75,12 @@ struct TopologyGraphParameters
    * alone. */
   bool vertex_faces_from_edges = true;
 
+  static constexpr int kDefaultDilationRadius = 2;
   static constexpr int kMaxDilationRadius = 1000;
+  /** \brief [0, kMaxDilationRadius] cells. */
+  static constexpr ParameterRange<int> kDilationRadiusRange{0, kMaxDilationRadius};
+  /** \brief [0, 1], a fraction. */
+  static constexpr ParameterRange<double> kMinFaceContactRange{0.0, 1.0};
 };
 
 /** \brief Metadata written with TopologyGraph::writeJson. */

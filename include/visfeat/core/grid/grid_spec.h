@@ -1,5 +1,7 @@
 #pragma once
 
+#include <visfeat/core/common/parameters.h>
+
 #include <Eigen/Core>
 
 #include <cstdint>
@@ -24,6 +26,11 @@ struct GridSpec
   static constexpr int kMinResolution = 4;
   /** \brief Largest accepted resolution; memory is checked separately. */
   static constexpr int kMaxResolution = 8192;
+  /** \brief [kMinResolution, kMaxResolution] cells along the longest side. */
+  static constexpr ParameterRange<int> kResolutionRange{kMinResolution, kMaxResolution};
+  /** \brief The resolution of DESIGN.md when the caller gives none (the estimator's
+   * default; the tool chooses it from the point spacing). */
+  static constexpr int kDefaultResolution = 256;
 
   Eigen::Vector3d origin{0.0, 0.0, 0.0};
   double cell_size = 1.0;
@@ -55,6 +62,37 @@ struct GridSpec
            static_cast<std::uint64_t>(dims.x()) *
              (static_cast<std::uint64_t>(c.y()) +
               static_cast<std::uint64_t>(dims.y()) * static_cast<std::uint64_t>(c.z()));
+  }
+
+  /** \brief A world point in cell units: (p - origin) / cell_size, so that cell
+   * (i, j, k) spans [i, i+1) x [j, j+1) x [k, k+1). */
+  Eigen::Vector3d toCellUnits(const Eigen::Vector3d& p) const
+  {
+    return (p - origin) / cell_size;
+  }
+
+  /** \brief The cell holding world point p: on each axis floor((p - origin) /
+   * cell_size), i.e. the cell (i, j, k) whose box origin + cell_size * [i, i+1) x
+   * [j, j+1) x [k, k+1) contains p. It is the arithmetic of pcl::octree's keys (the
+   * octree of buildVoxelBand() uses the grid's origin and cell size, and truncates,
+   * which is floor inside the grid), so a point finds the cell the band put it in.
+   *
+   * Outside the grid: an axis below the grid (or a NaN coordinate) gives -1, an axis
+   * at or above dims gives dims on that axis, so contains(cellOf(p)) is false exactly
+   * when p lies outside the grid or is not finite. No overflow for far points. */
+  CellCoord cellOf(const Eigen::Vector3d& p) const
+  {
+    CellCoord c;
+    for (int a = 0; a < 3; ++a) {
+      const double u = (p[a] - origin[a]) / cell_size;
+      if (!(u >= 0.0))
+        c[a] = -1; // below the grid, or NaN
+      else if (u >= dims[a])
+        c[a] = dims[a];
+      else
+        c[a] = static_cast<int>(u); // truncation = floor for u >= 0
+    }
+    return c;
   }
 
   /** \brief World position of the centre of a cell. */

@@ -2,6 +2,7 @@
 
 #include <visfeat/core/band/voxel_band.h>
 #include <visfeat/core/common/feature_class.h>
+#include <visfeat/core/common/parameters.h>
 #include <visfeat/core/visibility/visibility_map.h>
 
 #include <cstdint>
@@ -19,21 +20,44 @@ namespace visfeat {
 struct ComponentParameters
 {
   /** \brief Cells with visibility radius >= min_radius form components (rings).
-   * The paper uses 11. We default to 16: at 11, 14-19% of the valley cells 3-5 cells
-   * from an icosahedron edge (dihedral 138 degrees) reach the threshold and faces
-   * leak into edges; at 16 the valley stays below it, while edge ridges and face cores
-   * (more than ~10 cells from an edge) stay above. Needs max_radius >= min_radius. */
-  int min_radius = 16;
+   * The paper uses 11. Default kDefaultMinRadius (16): at 11, 14-19% of the valley
+   * cells 3-5 cells from an icosahedron edge (dihedral 138 degrees) reach the threshold
+   * and faces leak into edges; at 16 the valley stays below it, while edge ridges and
+   * face cores (more than ~10 cells from an edge) stay above. In cells, so it does not
+   * scale with resolution: features closer than about 2 min_radius cells merge.
+   * Range kMinRadiusRange and at most the visibility map's max_radius. */
+  int min_radius = kDefaultMinRadius;
   /** \brief Components with at most this many cells are vertex candidates (paper: 25).
-   * Vertex blobs hold the cells within 1-2 cells of a corner; keep it at 25. */
-  int vertex_max_cells = 25;
+   * Vertex blobs hold the cells within 1-2 cells of a corner (1-10 cells at any
+   * resolution); keep it at 25. Range kVertexMaxCellsRange (cells). */
+  int vertex_max_cells = kDefaultVertexMaxCells;
   /** \brief Raw mode only: a component is an edge when the mean number of
-   * same-component 6-neighbours of its cells is below this (paper: 3.5). */
-  double dimensionality = 3.5;
+   * same-component 6-neighbours of its cells is below this (paper: 3.5). Range
+   * kDimensionalityRange. */
+  double dimensionality = kDefaultDimensionality;
   /** \brief Default mode: a component is a face when one of its cells lies at least
    * this many 6-steps inside it (from its border); thinner ones are edges or vertices.
-   * Edge ridges are 2-4 cells wide (depth <= 2), face cores span tens of cells. */
-  int face_min_depth = 4;
+   * Edge ridges are 2-4 cells wide (depth <= 2), face cores span tens of cells.
+   * Range kFaceMinDepthRange (cells). */
+  int face_min_depth = kDefaultFaceMinDepth;
+
+  static constexpr int kDefaultVertexMaxCells = 25;
+  static constexpr double kDefaultDimensionality = 3.5;
+  static constexpr int kDefaultFaceMinDepth = 4;
+
+  /** \brief [1, VisibilityMap::kMaxRadius] rings; also at most max_radius. */
+  static constexpr ParameterRange<int> kMinRadiusRange{1, VisibilityMap::kMaxRadius};
+  /** \brief [0, 100000] cells. */
+  static constexpr ParameterRange<int> kVertexMaxCellsRange{0, 100000};
+  /** \brief [0, 6] mean same-component 6-neighbours. */
+  static constexpr ParameterRange<double> kDimensionalityRange{0.0, 6.0};
+  /** \brief [1, 1000] cells. */
+  static constexpr ParameterRange<int> kFaceMinDepthRange{1, 1000};
+
+  /** \brief Throws visfeat::Error naming the first parameter out of range, with its
+   * value, range and unit; min_radius must also be at most max_radius (the cap of the
+   * visibility map the components are taken from). */
+  void validate(int max_radius) const;
 };
 
 /** \brief One component (a "core": cells at or above min_radius, 6-connected). */
@@ -67,10 +91,7 @@ public:
                               const ComponentParameters& parameters,
                               bool raw);
 
-  /** \brief Throws visfeat::Error naming the first parameter out of range, with its
-   * value, range and unit: min_radius in [1, max_radius] (rings), vertex_max_cells in
-   * [0, 100000] (cells), dimensionality in [0, 6], face_min_depth in [1, 1000]
-   * (cells). */
+  /** \brief Same as parameters.validate(max_radius). */
   static void validate(const ComponentParameters& parameters, int max_radius);
 
   /** \brief Per cell (size n), its component label (1-based), 0 for cells below

@@ -23,14 +23,16 @@ struct SegmentationParameters
    * only). Off: the cleaned-up cores only. On by default. */
   bool complete_regions = true;
   /** \brief 6-connected pieces of the band with fewer cells than this are outlier
-   * clusters: their cells and points get no region (label 0). Default 16. */
+   * clusters: their cells and points get no region (label 0). Default 16, range
+   * kMinPieceCellsRange. */
   int min_piece_cells = 16;
   /** \brief Geodesic reach, in cells through the band, of the vertex test (default
    * mode): a small component is a vertex when the edges it reaches within this
    * distance separate at least two different pairs of faces (or its region touches
    * three faces); vertex candidates within this reach of each other are one vertex.
    * Edge components stop about min_radius cells short of a corner, so keep it above
-   * min_radius; it must stay below the shortest edge length. Default 24. */
+   * min_radius; it must stay below the shortest edge length. Default 24, range
+   * kVertexReachRange. */
   int vertex_reach = 24;
   /** \brief Joining: pieces of one edge (cores that separate the same two faces),
    * split by noise, by a speck or by a vertex region between them, are one edge when
@@ -38,12 +40,13 @@ struct SegmentationParameters
    * the band within sqrt(3) times as many 6-steps (pieces that touch are always
    * joined; pieces of one straight edge on one line join at any distance). Also the
    * longest gap bridged in an edge's skeleton. Keep it below the distance between two
-   * parallel edges of the same two faces. Default 24. */
+   * parallel edges of the same two faces. Default 24, range kJoinDistanceRange. */
   int join_distance = 24;
   /** \brief Complete regions: edge and vertex regions keep the cells within this many
    * 6-steps of their skeleton (their core cells and the ridge paths that join each
    * edge to its vertices); the rest of their watershed basin goes to the nearest face.
-   * Cores lie within about 1.5 cells of the true curve. Default 1 cell. */
+   * Cores lie within about 1.5 cells of the true curve. Default 1 cell, range
+   * kFeatureWidthRange. */
   int feature_width = 1;
   /** \brief Per point (the PCL front class): a point is a vertex or edge point when
    * it lies within this distance, in cells, of the middle line of a skeleton around
@@ -51,8 +54,30 @@ struct SegmentationParameters
    * face cell, or to the nearest face cell around it. Cells are coarser than the
    * points and the cores of obtuse edges are several cells wide: this keeps feature
    * points within about this distance of the curve. 0 = off (points take their cell's
-   * label). Default 1.0. */
+   * label). Default 1.0 (kNoisePointFeatureDistance = 1.25 in the estimator's noise
+   * mode), range kPointFeatureDistanceRange. */
   double point_feature_distance = 1.0;
+
+  /** \brief point_feature_distance of the noise mode: with the noise left along the
+   * surface after smoothing, feature points keep the same 2-cell bound (cells). */
+  static constexpr double kNoisePointFeatureDistance = 1.25;
+
+  /** \brief [0, 1000000] cells. */
+  static constexpr ParameterRange<int> kMinPieceCellsRange{0, 1000000};
+  /** \brief [1, 1000] cells. */
+  static constexpr ParameterRange<int> kVertexReachRange{1, 1000};
+  /** \brief [0, 1000] cells. */
+  static constexpr ParameterRange<int> kJoinDistanceRange{0, 1000};
+  /** \brief [0, 1000] cells (6-steps). */
+  static constexpr ParameterRange<int> kFeatureWidthRange{0, 1000};
+  /** \brief [0, 10] cells. */
+  static constexpr ParameterRange<double> kPointFeatureDistanceRange{0.0, 10.0};
+
+  /** \brief Throws visfeat::Error naming the first parameter out of range, with its
+   * value, range and unit (components first, see ComponentParameters::validate;
+   * max_radius is the cap of the visibility map, in rings). FeatureSegmentation::
+   * validate() checks the same ranges. */
+  void validate(int max_radius) const;
 };
 
 /** \brief A final region: a vertex, an edge or a face of the object. */
@@ -101,9 +126,7 @@ public:
                                      const VisibilityMap& map,
                                      const SegmentationParameters& parameters);
 
-  /** \brief Throws visfeat::Error naming the first parameter out of range, with its
-   * value, range and unit (e.g. "vertex_reach 0 is out of range [1, 1000] (cells)");
-   * the components' parameters first (ComponentSet::validate). */
+  /** \brief Same as parameters.validate(max_radius). */
   static void validate(const SegmentationParameters& parameters, int max_radius);
 
   /** \brief Per cell, its region label (1-based), 0 = none. */

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <visfeat/core/band/voxel_band.h>
+#include <visfeat/core/common/parameters.h>
 #include <visfeat/core/visibility/free_space.h>
 
 #include <cstdint>
@@ -11,7 +12,9 @@ namespace visfeat {
 
 /** \brief Called now and then with the cells done so far and the total: every few
  * hundred cells from the calling thread or OpenMP's thread 0, never concurrently, and
- * once more at the end with done == total. Keep it cheap. */
+ * once more at the end with done == total. Keep it cheap, and do not throw: all calls
+ * but the last come from inside an OpenMP parallel region, which an exception must not
+ * leave. */
 using ProgressCallback = std::function<void(std::size_t done, std::size_t total)>;
 
 /** \brief The trimmed visibility map: a visibility radius for every mixed cell.
@@ -28,24 +31,35 @@ using ProgressCallback = std::function<void(std::size_t done, std::size_t total)
 class VisibilityMap
 {
 public:
-  struct Parameters
-  {
-    /** \brief Cap of the radius (rings); the components threshold min_radius is the
-     * natural choice. Range [1, kMaxRadius], default 11. */
-    int max_radius = 11;
-    /** \brief Opacity delta in cell edges: a pair still sees each other while the
-     * blocked stretches add up to less than this. 0 (default) = exact visibility;
-     * the paper uses 3 for noisy scans. Range [0, kMaxOpacity]. */
-    double opacity = 0.0;
-    /** \brief Threads; 0 (default) = all available (OpenMP's default). */
-    int threads = 0;
-  };
-
   static constexpr int kMaxRadius = 64;
   static constexpr double kMaxOpacity = 64.0;
   static constexpr int kMaxThreads = 1024;
 
-  /** \brief Throws visfeat::Error naming the first parameter out of range. */
+  struct Parameters
+  {
+    /** \brief Cap of the radius, in rings: the trimmed map. Radii above the components
+     * threshold min_radius change nothing, so the natural cap is min_radius (the
+     * estimator's "auto", its default). Default kDefaultMinRadius (16), range
+     * kMaxRadiusRange. Cost grows with the square of the cap (rings grow). */
+    int max_radius = kDefaultMinRadius;
+    /** \brief Opacity delta in cell edges: a pair still sees each other while the
+     * blocked stretches add up to less than this. 0 (default) = exact visibility;
+     * the paper uses 3 for noisy scans. Range kOpacityRange. */
+    double opacity = 0.0;
+    /** \brief OpenMP threads; 0 (default) = all available (OpenMP's default). The
+     * result does not depend on it. Range kThreadsRange. */
+    int threads = 0;
+
+    /** \brief [1, 64] rings. */
+    static constexpr ParameterRange<int> kMaxRadiusRange{1, kMaxRadius};
+    /** \brief [0, 64] cell edges. */
+    static constexpr ParameterRange<double> kOpacityRange{0.0, kMaxOpacity};
+    /** \brief [0, 1024], 0 = all available. */
+    static constexpr ParameterRange<int> kThreadsRange{0, kMaxThreads};
+  };
+
+  /** \brief Throws visfeat::Error naming the first parameter out of range, with its
+   * value, range and unit. */
   static void validate(const Parameters& parameters);
 
   /** \brief Compute the map of a band. \throws visfeat::Error on bad parameters. */

@@ -1,0 +1,178 @@
+#include <visfeat/core/common/error.h>
+#include <visfeat/core/segmentation/point_labeling.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+namespace visfeat {
+
+namespace {
+
+std::vector<FeatureClass>
+regionClasses(const FeatureSegmentation& segmentation)
+{
+  std::vector<FeatureClass> classes(segmentation.regions().size());
+  for (std::size_t r = 0; r < classes.size(); ++r)
+    classes[r] = segmentation.regions()[r].feature_class;
+  return classes;
+}
+
+} // namespace
+
+PointLabeling::PointLabeling(const VoxelBand& band,
+                             const FeatureSegmentation& segmentation,
+                             double point_feature_distance)
+    : PointLabeling(band,
+                    segmentation.cellLabels(),
+                    regionClasses(segmentation),
+                    segmentation.skeleton(),
+                    segmentation.skeletonCentres(),
+                    segmentation.skeletonTangents(),
+                    point_feature_distance)
+{}
+
+PointLabeling::PointLabeling(const VoxelBand& band,
+                             const std::vector<std::uint32_t>& cell_labels,
+                             std::vector<FeatureClass> region_classes,
+                             const std::vector<char>& skeleton,
+                             const std::vector<Eigen::Vector3f>& skeleton_centres,
+                             const std::vector<Eigen::Vector3f>& skeleton_tangents,
+                             double point_feature_distance)
+    : band_(band)
+    , labels_(cell_labels)
+    , classes_(std::move(region_classes))
+    , skeleton_(skeleton)
+    , centres_(skeleton_centres)
+    , tangents_(skeleton_tangents)
+    , distance_(point_feature_distance)
+{
+  if (!(std::isfinite(distance_) && distance_ >= 0.0)) {
+    std::ostringstream msg;
+    msg << "point_feature_distance " << distance_
+        << " must be finite and >= 0 (cells; 0 = off)";
+    throw Error(msg.str());
+  }
+  if (labels_.size() != band.size() ||
+      (!skeleton_.empty() &&
+       (skeleton_.size() != band.size() || centres_.size() != band.size() ||
+        tangents_.size() != band.size())))
+    throw Error("PointLabeling: the labels or the skeleton do not match the band");
+  for (const std::uint32_t label : labels_)
+    if (label > classes_.size())
+      throw Error("PointLabeling: cell label " + std::to_string(label) +
+                  " exceeds the " + std::to_string(classes_.size()) + " regions");
+  if (distance_ <= 0.0 || skeleton_.empty())
+    return;
+  // Only points of cells within kSkeletonReach of a skeleton cell can change label.
+  near_skeleton_.assign(skeleton_.size(), 0);
+  for (std::size_t c = 0; c < skeleton_.size(); ++c) {
+    if (!skeleton_[c])
+      continue;
+    const CellCoord at = band.coord(static_cast<CellId>(c));
+    for (int dz = -kSkeletonReach; dz <= kSkeletonReach; ++dz)
+      for (int dy = -kSkeletonReach; dy <= kSkeletonReach; ++dy)
+        for (int dx = -kSkeletonReach; dx <= kSkeletonReach; ++dx) {
+          const CellId n = band.find(at + CellCoord(dx, dy, dz));
+          if (n != kNoCell)
+            near_skeleton_[static_cast<std::size_t>(n)] = 1;
+        }
+  }
+}
+
+PointLabel
+PointLabeling::labelOf(const Eigen::Vector3d& q, CellId cell) const
+{
+  PointLabel result;
+  if (cell == kNoCell)
+    return result;
+  result.label = labels_[static_cast<std::size_t>(cell)];
+  result.feature_class = cellClass(cell);
+  if (near_skeleton_.empty() || !near_skeleton_[static_cast<std::size_t>(cell)])
+    return result;
+
+  const CellCoord c = band_.coord(cell);
+  double near_skeleton = std::numeric_limits<double>::infinity();
+  CellId nearest_skeleton = kNoCell;
+  double near_vertex = std::numeric_limits<double>::infinity();
+  CellId nearest_vertex = kNoCell;
+  double near_face = std::numeric_limits<double>::infinity();
+  std::uint32_t face = 0;
+  for (int dz = -kSkeletonReach; dz <= kSkeletonReach; ++dz)
+    for (int dy = -kSkeletonReach; dy <= kSkeletonReach; ++dy)
+      for (int dx = -kSkeletonReach; dx <= kSkeletonReach; ++dx) {
+        const CellId n = band_.find(c + CellCoord(dx, dy, dz));
+        if (n == kNoCell)
+          continue;
+        const auto s = static_cast<std::size_t>(n);
+        if (skeleton_[s]) {
+          // Distance to the piece of middle line the skeleton cell stands for.
+          const Eigen::Vector3d d = q - centres_[s].cast<double>();
+          const Eigen::Vector3d u = tangents_[s].cast<double>();
+          const double along = std::clamp(d.dot(u), -kHalfPiece, kHalfPiece);
+          const double distance = (d - along * u).norm();
+          if (distance < near_skeleton) {
+            near_skeleton = distance;
+            nearest_skeleton = n;
+          }
+          if (distance < near_vertex && cellClass(n) == FeatureClass::kVertex) {
+            near_vertex = distance;
+            nearest_vertex = n;
+          }
+        }
+        if (std::abs(dx) <= kFaceReach && std::abs(dy) <= kFaceReach &&
+            std::abs(dz) <= kFaceReach && cellClass(n) == FeatureClass::kFace) {
+          const double d =
+            (band_.coord(n).cast<double>() + Eigen::Vector3d::Constant(0.5) - q).norm();
+          if (d < near_face) {
+            near_face = d;
+            face = labels_[s];
+          }
+        }
+      }
+  if (near_vertex <= distance_)
+    nearest_skeleton = nearest_vertex;
+  if (near_skeleton <= distance_) {
+    result.label = labels_[static_cast<std::size_t>(nearest_skeleton)];
+    result.feature_class = cellClass(nearest_skeleton);
+  } else if ((result.feature_class == FeatureClass::kEdge ||
+              result.feature_class == FeatureClass::kVertex) &&
+             face != 0) {
+    result.label = face;
+    result.feature_class = FeatureClass::kFace;
+  }
+  return result;
+}
+
+RegionPointGeometry::RegionPointGeometry(std::size_t regions)
+{
+  Sum empty;
+  empty.min = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
+  empty.max = -empty.min;
+  sums_.assign(regions, empty);
+}
+
+void
+RegionPointGeometry::add(std::uint32_t label, const Eigen::Vector3d& p)
+{
+  if (label == 0 || label > sums_.size() || !p.allFinite())
+    return;
+  Sum& s = sums_[label - 1];
+  ++s.n;
+  s.sum += p;
+  s.min = s.min.cwiseMin(p);
+  s.max = s.max.cwiseMax(p);
+}
+
+void
+RegionPointGeometry::applyTo(TopologyGraph& graph) const
+{
+  for (std::size_t r = 0; r < sums_.size(); ++r)
+    if (sums_[r].n > 0)
+      graph.setPointGeometry(static_cast<std::uint32_t>(r + 1), sums_[r].n,
+                             sums_[r].sum / static_cast<double>(sums_[r].n),
+                             sums_[r].min, sums_[r].max);
+}
+
+} // namespace visfeat
