@@ -371,6 +371,9 @@ run(int argc, char** argv)
   Estimator estimator;
   auto progress = std::make_shared<ProgressPrinter>();
   configureEstimator(estimator, opt, in, progress);
+  // -max_radius 0 (the default) is the library's automatic cap, min_radius: what is
+  // printed, drawn and written into the graph is the cap compute() uses.
+  opt.max_radius = estimator.getMaxRadius();
   pcl::PointCloud<visfeat::PointVisibility> result;
   if (!compute(estimator, opt, *progress, result, error))
     return fail(error);

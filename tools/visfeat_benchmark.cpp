@@ -42,8 +42,8 @@ namespace {
 
 const char* const kProgram = "visfeat_benchmark";
 
-constexpr int kDefaultMaxRadius = 16; // = the estimator's default min_radius
-constexpr double kDefaultOpacity = 0.0;
+constexpr int kDefaultMaxRadius = visfeat::kDefaultMinRadius; // the estimator's cap
+constexpr double kDefaultOpacity = visfeat::VisibilityMap::Parameters{}.opacity;
 constexpr double kSpacingCells = 0.5;
 constexpr int kBaselineK = 30;
 

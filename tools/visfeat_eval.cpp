@@ -106,8 +106,10 @@ printHelp(const char* program)
   print_info("    -opacity D         = visfeat's opacity (default: the estimator's, ");
   print_value("0");
   print_info(" cell edges)\n");
-  print_info("    -noise_mode        = visfeat's noise mode (smoothing 2 cells, "
-             "feature points within 1.25 cells; default: ");
+  print_info("    -noise_mode        = visfeat's noise mode (smoothing %g cells, "
+             "feature points within %g cells; default: ",
+             visfeat::VisibilityFeatureEstimation<pcl::PointXYZ>::kNoiseSmoothingRadius,
+             visfeat::VisibilityFeatureEstimation<pcl::PointXYZ>::kNoisePointDistance);
   print_value("off");
   print_info(")\n");
   print_info("    -min_radius R      = visfeat's min_radius (default: the "

@@ -2,10 +2,11 @@
 
 #include "visfeat_options.h"
 
-#include "common/automatic_resolution.h"
 #include "common/output_files.h"
 
+#include <visfeat/core/band/point_smoothing.h>
 #include <visfeat/core/grid/grid_spec.h>
+#include <visfeat/core/grid/resolution.h>
 #include <visfeat/core/visibility/visibility_map.h>
 #include <visfeat/visibility_feature_estimation.h>
 
@@ -15,6 +16,7 @@
 #include <vector>
 
 using namespace pcl::console;
+using Estimator = visfeat::VisibilityFeatureEstimation<pcl::PointXYZ>;
 
 namespace visfeat_tools {
 
@@ -59,15 +61,17 @@ printHelp(const char* program)
   print_value("automatic");
   print_info(": %g point spacings per cell, the spacing estimated from k-NN "
              "distances; %d-%d cells)\n",
-             kSpacingsPerCell, visfeat::GridSpec::kMinResolution,
-             visfeat::GridSpec::kMaxResolution);
+             visfeat::kSpacingsPerCell, visfeat::GridSpec::kResolutionRange.min,
+             visfeat::GridSpec::kResolutionRange.max);
   print_info(
     "    -min_radius R     = cells with radius >= R form components (default: ");
   print_value("%d", kDefaultMinRadius);
   print_info(" rings; the paper used 11)\n");
   print_info("    -max_radius R     = cap of the visibility radius (default: ");
   print_value("min_radius");
-  print_info("; %d-%d rings, >= min_radius)\n", 1, visfeat::VisibilityMap::kMaxRadius);
+  print_info("; %d-%d rings, >= min_radius)\n",
+             visfeat::VisibilityMap::Parameters::kMaxRadiusRange.min,
+             visfeat::VisibilityMap::Parameters::kMaxRadiusRange.max);
   print_info("    -vertex_cells N   = components of <= N cells are vertex candidates "
              "(default: ");
   print_value("%d", kDefaultVertexCells);
@@ -86,19 +90,21 @@ printHelp(const char* program)
   print_info(" cell edges = exact)\n");
   print_info("    -paper_noise      = the paper's setting for noise (its Section 6): "
              "-opacity ");
-  print_value("%g",
-              visfeat::VisibilityFeatureEstimation<pcl::PointXYZ>::kPaperNoiseOpacity);
+  print_value("%g", Estimator::kPaperNoiseOpacity);
   print_info(", no smoothing; -noise_mode does better on our measurements\n");
   print_info("    -noise_mode       = noisy scans (Gaussian noise up to ~0.5 cell): "
-             "-smooth 2, feature points within 1.25 cells of a curve (default: ");
+             "-smooth %g, feature points within %g cells of a curve (default: ",
+             Estimator::kNoiseSmoothingRadius, Estimator::kNoisePointDistance);
   print_value("off");
   print_info(")\n");
   print_info("    -smooth R         = project every point onto the plane of its "
              "neighbours within R cells first (default: ");
   print_value("0");
   print_info(" = off, ");
-  print_value("2");
-  print_info(" with -noise_mode; 0-8 cells)\n");
+  print_value("%g", Estimator::kNoiseSmoothingRadius);
+  print_info(" with -noise_mode; %g-%g cells)\n",
+             visfeat::SmoothingParameters::kRadiusRange.min,
+             visfeat::SmoothingParameters::kRadiusRange.max);
   print_info("    -threads T        = threads of the visibility map (default: ");
   print_value("%d", kDefaultThreads);
   print_info(" = all)\n");
@@ -136,19 +142,24 @@ readValues(const Arguments& args, Options& opt, std::string& error)
 {
   // Types and signs here; ranges with the library's own limits, before the (possibly
   // long) load.
-  if (!args.getInteger("-resolution", visfeat::GridSpec::kMinResolution,
-                       visfeat::GridSpec::kMaxResolution, opt.resolution, error) ||
-      !args.getInteger("-max_radius", 1, visfeat::VisibilityMap::kMaxRadius,
-                       opt.max_radius, error) ||
-      !args.getInteger("-min_radius", 1, visfeat::VisibilityMap::kMaxRadius,
-                       opt.min_radius, error) ||
-      !args.getInteger("-vertex_cells", 0, 100000, opt.vertex_cells, error) ||
-      !args.getReal("-dimensionality", 0.0, 6.0, opt.dimensionality, error) ||
-      !args.getReal("-opacity", 0.0, visfeat::VisibilityMap::kMaxOpacity, opt.opacity,
-                    error) ||
-      !args.getReal("-smooth", 0.0, 8.0, opt.smooth, error) ||
-      !args.getInteger("-threads", 0, visfeat::VisibilityMap::kMaxThreads, opt.threads,
-                       error) ||
+  using Components = visfeat::ComponentParameters;
+  using Visibility = visfeat::VisibilityMap::Parameters;
+  const auto integer = [&](const char* name, const visfeat::ParameterRange<int>& range,
+                           auto& value) {
+    return args.getInteger(name, range.min, range.max, value, error);
+  };
+  const auto real = [&](const char* name, const visfeat::ParameterRange<double>& range,
+                        double& value) {
+    return args.getReal(name, range.min, range.max, value, error);
+  };
+  if (!integer("-resolution", visfeat::GridSpec::kResolutionRange, opt.resolution) ||
+      !integer("-max_radius", Visibility::kMaxRadiusRange, opt.max_radius) ||
+      !integer("-min_radius", Components::kMinRadiusRange, opt.min_radius) ||
+      !integer("-vertex_cells", Components::kVertexMaxCellsRange, opt.vertex_cells) ||
+      !real("-dimensionality", Components::kDimensionalityRange, opt.dimensionality) ||
+      !real("-opacity", Visibility::kOpacityRange, opt.opacity) ||
+      !real("-smooth", visfeat::SmoothingParameters::kRadiusRange, opt.smooth) ||
+      !integer("-threads", Visibility::kThreadsRange, opt.threads) ||
       !args.getInteger("-memory_limit_mb", 0, 1LL << 40, opt.memory_limit_mb, error) ||
       !args.getInteger("-mesh_points", 1, static_cast<long long>(kMaxMeshPoints),
                        opt.mesh.points, error) ||
@@ -164,8 +175,7 @@ readValues(const Arguments& args, Options& opt, std::string& error)
     return false;
   }
   if (opt.paper_noise)
-    opt.opacity =
-      visfeat::VisibilityFeatureEstimation<pcl::PointXYZ>::kPaperNoiseOpacity;
+    opt.opacity = Estimator::kPaperNoiseOpacity;
   if (args.has("-mesh_spacing") && !(opt.mesh.spacing > 0.0)) {
     error = "-mesh_spacing must be positive, got " + args.value("-mesh_spacing");
     return false;
@@ -177,9 +187,7 @@ readValues(const Arguments& args, Options& opt, std::string& error)
   opt.repair = !args.has("-no_repair");
   opt.raw = args.has("-raw");
   opt.regions = !args.has("-no_regions");
-  if (opt.max_radius == 0)
-    opt.max_radius = opt.min_radius;
-  if (opt.min_radius > opt.max_radius) {
+  if (opt.max_radius != 0 && opt.min_radius > opt.max_radius) {
     error = "-min_radius " + std::to_string(opt.min_radius) + " exceeds -max_radius " +
             std::to_string(opt.max_radius) + ": components need radii up to min_radius";
     return false;

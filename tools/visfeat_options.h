@@ -7,18 +7,25 @@
 #include "common/mesh_input.h"
 #include "picture/picture_requests.h"
 
+#include <visfeat/core/common/parameters.h>
+#include <visfeat/core/segmentation/components.h>
+#include <visfeat/core/visibility/visibility_map.h>
+
 #include <set>
 #include <string>
 
 namespace visfeat_tools {
 
-// No default resolution: without -resolution it follows from the point spacing
-// (kSpacingsPerCell spacings per cell, common/automatic_resolution.h).
-constexpr int kDefaultMinRadius = 16;
-constexpr int kDefaultVertexCells = 25;
-constexpr double kDefaultDimensionality = 3.5;
-constexpr double kDefaultOpacity = 0.0;
-constexpr int kDefaultThreads = 0;
+// The defaults are the library's (visfeat/core/.../*.h), not restated here. No default
+// resolution: without -resolution it follows from the point spacing
+// (visfeat::estimateResolution, common/automatic_resolution.h).
+constexpr int kDefaultMinRadius = visfeat::kDefaultMinRadius;
+constexpr int kDefaultVertexCells =
+  visfeat::ComponentParameters::kDefaultVertexMaxCells;
+constexpr double kDefaultDimensionality =
+  visfeat::ComponentParameters::kDefaultDimensionality;
+constexpr double kDefaultOpacity = visfeat::VisibilityMap::Parameters{}.opacity;
+constexpr int kDefaultThreads = visfeat::VisibilityMap::Parameters{}.threads;
 
 /** \brief The visfeat tool's command line, read and checked. */
 struct Options
@@ -27,7 +34,7 @@ struct Options
   std::string output;
   int resolution = 0; // 0 = automatic
   int min_radius = kDefaultMinRadius;
-  int max_radius = 0; // 0 = min_radius
+  int max_radius = 0; // 0 = min_radius (the estimator's automatic cap)
   int vertex_cells = kDefaultVertexCells;
   double dimensionality = kDefaultDimensionality;
   bool raw = false;

@@ -6,7 +6,6 @@
 #include <visfeat/core/common/error.h>
 #include <visfeat/core/segmentation/feature_segmentation.h>
 
-
 namespace visfeat {
 namespace segmentation {
 
