@@ -18,9 +18,11 @@ bash "$root/scripts/install_deps.sh"
 
 echo "== build ($build_dir)"
 cmake -S . -B "$build_dir" -DCMAKE_BUILD_TYPE=Release
-# Only what the demo runs (the tool's target is visfeat_tool, its file visfeat).
+# The libraries, every tool (the tool's target is visfeat_tool, its file visfeat) and
+# the sample: all that README's commands and `cmake --install` need, but not the
+# tests (scripts/test.sh builds those).
 cmake --build "$build_dir" -j"$(nproc 2>/dev/null || echo 2)" \
-  --target visfeat_tool visfeat_generate
+  --target visfeat_tool visfeat_generate visfeat_benchmark visfeat_eval label_features
 
 mkdir -p "$out"
 echo "== generate a sample cloud"
@@ -46,16 +48,21 @@ echo "== pictures: $out/${model}.png $out/${model}_radius.png"
 cat <<MSG
 
 Outputs:
-  $out/$model.pcd             input cloud (x y z, curve_distance = distance to the
-                                  true sharp curves, face_id), truth in ${model}_truth.json
-  $out/${model}_labeled.pcd   per point: visibility_radius, label (region id),
-                                  feature_class (1 vertex, 2 edge, 3 face)
-  $out/${model}_cells.pcd     one point per voxel-band cell, same fields
-  $out/${model}_graph.json    topology graph (regions, arcs, grid, parameters)
-  $out/${model}_graph.dot     the same graph for GraphViz (dot -Tpng)
-  $out/${model}.png           picture: vertices red, edges blue, faces pastel, with the
-                                  topology graph (spheres at region centroids, arcs)
-  $out/${model}_radius.png    picture: visibility radius, blue (small) to red (cap)
+  $out/$model.pcd
+      input cloud (x y z, curve_distance = distance to the true sharp curves,
+      face_id); its truth in $out/${model}_truth.json
+  $out/${model}_labeled.pcd
+      per point: visibility_radius, label (region id), feature_class (1 vertex,
+      2 edge, 3 face)
+  $out/${model}_cells.pcd
+      one point per voxel-band cell, same fields
+  $out/${model}_graph.json, $out/${model}_graph.dot
+      topology graph (regions, arcs, grid, parameters); DOT for GraphViz (dot -Tpng)
+  $out/${model}.png
+      picture: vertices red, edges blue, faces pastel, with the topology graph
+      (spheres at region centroids, arcs)
+  $out/${model}_radius.png
+      picture: visibility radius, blue (small) to red (cap)
 
 View them with:
   pcl_viewer $out/${model}_labeled.pcd

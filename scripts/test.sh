@@ -34,7 +34,8 @@ else
 fi
 
 echo "== configure ($build_dir)"
-cmake -S . -B "$build_dir" -DVISFEAT_WARNINGS_AS_ERRORS=ON "${cmake_args[@]}"
+cmake -S . -B "$build_dir" -DVISFEAT_WARNINGS_AS_ERRORS=ON -DVISFEAT_BUILD_TESTS=ON \
+  -DBUILD_TESTING=ON "${cmake_args[@]}"
 echo "== build"
 cmake --build "$build_dir" -j"$jobs"
 echo "== test"

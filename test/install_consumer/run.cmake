@@ -4,7 +4,8 @@
 #         [-DCONFIG=Release] [-DCXX_COMPILER=...] [-DGENERATOR=...]
 #         [-DEXTRA_FLAGS="-fsanitize=..."] -P run.cmake
 # (a) installs the visfeat build into PREFIX, (b) configures the consumer project
-# with CMAKE_PREFIX_PATH=PREFIX, (c) builds it, (d) runs it. Any failing step
+# with CMAKE_PREFIX_PATH=PREFIX, (c) builds it, (d) runs it; (b)-(d) again for the
+# core-only consumer in core_only/ (find_package(visfeat COMPONENTS core), no PCL). Any failing step
 # stops with FATAL_ERROR and shows that step's output.
 #
 # EXTRA_FLAGS: when visfeat is built with VISFEAT_SANITIZE, the consumer is
@@ -40,34 +41,36 @@ function(step name)
   set(step_output "${out}" PARENT_SCOPE)
 endfunction()
 
-file(REMOVE_RECURSE "${PREFIX}" "${WORK_DIR}")
+file(REMOVE_RECURSE "${PREFIX}" "${WORK_DIR}" "${WORK_DIR}-core")
 
 # (a) install
 step(install ${CMAKE_COMMAND} --install "${BUILD_DIR}" --prefix "${PREFIX}" --config "${CONFIG}")
 
-# (b) configure
-set(args -S "${SOURCE_DIR}" -B "${WORK_DIR}"
-         "-DCMAKE_PREFIX_PATH=${PREFIX}"
-         "-DCMAKE_BUILD_TYPE=${CONFIG}")
-if(GENERATOR)
-  list(APPEND args -G "${GENERATOR}")
-endif()
-if(CXX_COMPILER)
-  list(APPEND args "-DCMAKE_CXX_COMPILER=${CXX_COMPILER}")
-endif()
-if(EXTRA_FLAGS)
-  list(APPEND args "-DCMAKE_CXX_FLAGS=${EXTRA_FLAGS}"
-                   "-DCMAKE_EXE_LINKER_FLAGS=${EXTRA_FLAGS}")
-endif()
-step(configure ${CMAKE_COMMAND} ${args})
+# (b)-(d) for each consumer: the PCL front (SOURCE_DIR) and the PCL-free core alone
+# (SOURCE_DIR/core_only, which refuses to find PCL).
+function(build_and_run source_dir work_dir)
+  set(args -S "${source_dir}" -B "${work_dir}"
+           "-DCMAKE_PREFIX_PATH=${PREFIX}"
+           "-DCMAKE_BUILD_TYPE=${CONFIG}")
+  if(GENERATOR)
+    list(APPEND args -G "${GENERATOR}")
+  endif()
+  if(CXX_COMPILER)
+    list(APPEND args "-DCMAKE_CXX_COMPILER=${CXX_COMPILER}")
+  endif()
+  if(EXTRA_FLAGS)
+    list(APPEND args "-DCMAKE_CXX_FLAGS=${EXTRA_FLAGS}"
+                     "-DCMAKE_EXE_LINKER_FLAGS=${EXTRA_FLAGS}")
+  endif()
+  step(configure ${CMAKE_COMMAND} ${args})
+  step(build ${CMAKE_COMMAND} --build "${work_dir}" --config "${CONFIG}")
+  set(exe "${work_dir}/consumer")
+  if(NOT EXISTS "${exe}")
+    set(exe "${work_dir}/${CONFIG}/consumer") # multi-config generators
+  endif()
+  step(run "${exe}")
+  message(STATUS "install_consumer: ${step_output}")
+endfunction()
 
-# (c) build
-step(build ${CMAKE_COMMAND} --build "${WORK_DIR}" --config "${CONFIG}")
-
-# (d) run
-set(exe "${WORK_DIR}/consumer")
-if(NOT EXISTS "${exe}")
-  set(exe "${WORK_DIR}/${CONFIG}/consumer") # multi-config generators
-endif()
-step(run "${exe}")
-message(STATUS "install_consumer: ${step_output}")
+build_and_run("${SOURCE_DIR}" "${WORK_DIR}")
+build_and_run("${SOURCE_DIR}/core_only" "${WORK_DIR}-core")
