@@ -9,12 +9,11 @@ int
 main()
 {
   const visfeat::GridSpec grid = visfeat::GridSpec::fromBounds(
-      Eigen::Vector3d(0.0, 0.0, 0.0), Eigen::Vector3d(1.0, 2.0, 4.0), 64);
+    Eigen::Vector3d(0.0, 0.0, 0.0), Eigen::Vector3d(1.0, 2.0, 4.0), 64);
   bool refused = false;
   try {
     visfeat::GridSpec::fromBounds(Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), 64);
-  }
-  catch (const visfeat::Error&) {
+  } catch (const visfeat::Error&) {
     refused = true;
   }
   std::cout << "visfeat core consumer: dims " << grid.dims.transpose() << std::endl;
