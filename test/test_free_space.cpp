@@ -6,7 +6,10 @@
 #include "reference/brute_force.h"
 
 #include <visfeat/core/band/voxel_band.h>
+#include <visfeat/core/common/error.h>
+#include <visfeat/core/visibility/band_tiles.h>
 #include <visfeat/core/visibility/free_space.h>
+#include <visfeat/core/visibility/free_space_window.h>
 #include <visfeat/core/visibility/segment_table.h>
 
 #include <gtest/gtest.h>
@@ -125,18 +128,53 @@ TEST(FreeSpace, NeighboursAndSelfAlwaysSeeEachOther)
     }
 }
 
-TEST(FreeSpace, LinearIndexMatchesIsFree)
+// A window is a dense copy of the sparse mask: the same bit for every subcell it
+// covers, bricks outside the grid occluded, and its linear index at its strides.
+TEST(FreeSpaceWindow, CopiesTheMaskAroundABrick)
 {
-  const VoxelBand band = bandOf({CellCoord(3, 4, 5), CellCoord(9, 2, 7)}, 12);
+  const VoxelBand band =
+    bandOf({CellCoord(3, 4, 5), CellCoord(9, 2, 7), CellCoord(15, 8, 1)}, 20);
   const FreeSpace fs(band);
-  ASSERT_EQ(fs.dims(), Vec3i::Constant(24));
-  for (int z = 0; z < 24; ++z)
-    for (int y = 0; y < 24; ++y)
-      for (int x = 0; x < 24; ++x) {
-        const Vec3i s(x, y, z);
-        ASSERT_EQ(fs.linearIndex(s), x + fs.strideY() * y + fs.strideZ() * z);
-        ASSERT_EQ(fs.isFreeAt(fs.linearIndex(s)), fs.isFree(s));
-      }
+  ASSERT_EQ(fs.dims(), Vec3i::Constant(40));
+  ASSERT_EQ(fs.brickDims(), Vec3i::Constant(3));
+  EXPECT_GT(fs.brickCount(), 1u);
+  for (int bricks : {1, 3, 5}) {
+    visfeat::FreeSpaceWindow window(bricks);
+    for (const Vec3i& centre : {Vec3i(0, 0, 0), Vec3i(1, 0, 0), Vec3i(1, 1, 1)}) {
+      window.load(fs, centre);
+      EXPECT_EQ(window.origin(), 16 * (centre - Vec3i::Constant(bricks / 2)));
+      std::size_t covered = 0;
+      for (int z = -48; z < 80; ++z)
+        for (int y = -48; y < 80; ++y)
+          for (int x = -48; x < 80; ++x) {
+            const Vec3i s(x, y, z);
+            if (!window.contains(s))
+              continue;
+            ++covered;
+            const Vec3i l = s - window.origin();
+            ASSERT_EQ(window.linearIndex(s),
+                      l.x() + window.strideY() * l.y() + window.strideZ() * l.z());
+            ASSERT_EQ(window.isFreeAt(window.linearIndex(s)), fs.isFree(s))
+              << toString(s) << " window " << bricks << " around " << toString(centre);
+          }
+      EXPECT_EQ(covered,
+                static_cast<std::size_t>(16 * bricks) * 16 * bricks * 16 * bricks);
+    }
+  }
+  EXPECT_THROW(visfeat::FreeSpaceWindow(2), visfeat::Error);
+}
+
+// Memory follows the band: a band in one corner of a large grid allocates a handful of
+// bricks, and estimateBytes counts them exactly before building.
+TEST(FreeSpace, MemoryFollowsTheBandNotTheGrid)
+{
+  const VoxelBand band = bandOf({CellCoord(3, 4, 5), CellCoord(4, 4, 5)}, 2000);
+  const FreeSpace fs(band);
+  EXPECT_EQ(fs.memoryBytes(), FreeSpace::estimateBytes(band));
+  EXPECT_LE(fs.brickCount(), 8u);
+  EXPECT_LT(fs.memoryBytes(), 8u * 1024u);
+  EXPECT_TRUE(fs.isFree(FreeSpace::centre(CellCoord(3, 4, 5))));
+  EXPECT_FALSE(fs.isFree(Vec3i(3000, 3000, 3000)));
 }
 
 // Offsets with |d|_inf <= 1 stay inside the always-free 4x4x4 blocks around the ends:
@@ -145,7 +183,7 @@ TEST(SegmentTable, NoChecksForNeighbourOffsets)
 {
   const VoxelBand band = bandOf({CellCoord(5, 5, 5)});
   const FreeSpace fs(band);
-  const SegmentTable table(fs, 6);
+  const SegmentTable table(6);
   EXPECT_EQ(table.maxDistance(), 6);
   for (int z = -1; z <= 1; ++z)
     for (int y = -1; y <= 1; ++y)
@@ -204,7 +242,8 @@ TEST_P(ReferenceBandTest, SegmentTestMatchesReferenceOnAllPairs)
   constexpr int kMaxDistance = 6;
   const VoxelBand& band = named().band;
   const FreeSpace fs(band);
-  const SegmentTable table(fs, kMaxDistance);
+  const SegmentTable table(kMaxDistance);
+  visfeat::FreeSpaceWindow window(table.windowBricks());
   const ref::FreeSubcells rfs(band.grid(), band.coords());
 
   std::size_t pairs = 0, blocked_pairs = 0, mismatches = 0;
@@ -214,7 +253,8 @@ TEST_P(ReferenceBandTest, SegmentTestMatchesReferenceOnAllPairs)
       report << "\n  " << what;
   };
   for (const CellCoord& a : band.coords()) {
-    const std::int64_t base = fs.linearIndex(FreeSpace::centre(a));
+    window.load(fs, visfeat::BandTiles::brickOf(a));
+    const std::int32_t base = window.linearIndex(FreeSpace::centre(a));
     for (int dz = -kMaxDistance; dz <= kMaxDistance; ++dz)
       for (int dy = -kMaxDistance; dy <= kMaxDistance; ++dy)
         for (int dx = -kMaxDistance; dx <= kMaxDistance; ++dx) {
@@ -257,11 +297,11 @@ TEST_P(ReferenceBandTest, SegmentTestMatchesReferenceOnAllPairs)
               fail(tag + "FreeSpace::sees(a, b) differs");
             if (fs.sees(b, a, opacity) != vis)
               fail(tag + "FreeSpace::sees(b, a) differs");
-            if (table.sees(a, b, opacity) != vis)
+            if (table.sees(fs, a, b, opacity) != vis)
               fail(tag + "SegmentTable::sees(a, b) differs");
-            if (table.sees(b, a, opacity) != vis)
+            if (table.sees(fs, b, a, opacity) != vis)
               fail(tag + "SegmentTable::sees(b, a) differs");
-            if (table.sees(base, d, opacity) != vis)
+            if (table.sees(window, base, d, opacity) != vis)
               fail(tag + "SegmentTable::sees(base, d) differs");
           }
         }
@@ -304,7 +344,7 @@ TEST(FreeSpace, ThinPlateSidesDoNotSeeEachOther)
       VoxelBand::fromCells(plate.band.grid, plate.band.cells, options);
     const FreeSpace fs(band);
     const int max_distance = 10;
-    const SegmentTable table(fs, max_distance);
+    const SegmentTable table(max_distance);
     const ref::FreeSubcells rfs(band.grid(), band.coords());
     ASSERT_GT(plate.top_inner.size(), 20u);
     ASSERT_GT(plate.bottom_inner.size(), 20u);
@@ -320,8 +360,8 @@ TEST(FreeSpace, ThinPlateSidesDoNotSeeEachOther)
                     fs.blockedLength(a, b) < 1.25 - kLengthTolerance;
         if ((b - a).cwiseAbs().sum() <= max_distance) {
           ++near_pairs;
-          seen = seen || table.sees(a, b, 0.0) || table.sees(a, b, 1.0) ||
-                 table.sees(b, a, 1.0);
+          seen = seen || table.sees(fs, a, b, 0.0) || table.sees(fs, a, b, 1.0) ||
+                 table.sees(fs, b, a, 1.0);
         }
         closest = std::min(closest, (b - a).cast<double>().norm());
         if (seen && visible_pairs++ == 0)

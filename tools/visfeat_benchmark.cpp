@@ -313,11 +313,11 @@ runVisfeat(const Settings& s,
         best.phases.visibility_ms > 0
           ? static_cast<double>(band.size()) / (best.phases.visibility_ms / 1e3)
           : 0.0;
-      // The estimator does not expose its FreeSpace; its mask size follows from the
-      // grid.
+      // The estimator releases its FreeSpace after the map; its size follows from
+      // the band (exactly).
       best.data_mib =
         static_cast<double>(band.memoryBytes() +
-                            visfeat::FreeSpace::estimateBytes(band.grid()) +
+                            visfeat::FreeSpace::estimateBytes(band) +
                             estimator.getVisibilityMap().radii().size()) /
         (1024.0 * 1024.0);
     }

@@ -165,7 +165,8 @@ void
 VisibilityFeatureEstimation<PointInT, PointOutT>::checkMemoryBudget(
   const Run& run) const
 {
-  // Refuse before allocating: the subcell mask dominates; cells are at most the points.
+  // Refuse before allocating the band: cells are at most the points. The free space and
+  // the map are checked again once the band is known (checkBandMemory).
   const GridSpec& grid = run.grid;
   const std::size_t points = surface_->size();
   const std::size_t cells =
@@ -173,13 +174,27 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::checkMemoryBudget(
   const int threads = resolveThreads(run.visibility.threads);
   const std::uint64_t octree_bytes = std::uint64_t{160} * cells + 4 * points;
   const std::uint64_t estimate =
-    FreeSpace::estimateBytes(grid) + VoxelBand::estimateBytes(grid, cells, points) +
-    octree_bytes + std::uint64_t{4} * cells * static_cast<std::uint64_t>(threads) +
+    VoxelBand::estimateBytes(grid, cells, points) + octree_bytes +
+    std::uint64_t{4} * cells * static_cast<std::uint64_t>(threads) +
     (run.smoothing.radius > 0.0 ? (sizeof(PointInT) + 40) * std::uint64_t{points} : 0);
   checkMemory(estimate, memory_limit_,
               "a grid of " + std::to_string(grid.dims.x()) + "x" +
                 std::to_string(grid.dims.y()) + "x" + std::to_string(grid.dims.z()) +
                 " cells");
+}
+
+template <typename PointInT, typename PointOutT>
+void
+VisibilityFeatureEstimation<PointInT, PointOutT>::checkBandMemory(const VoxelBand& band,
+                                                                  const Run& run) const
+{
+  // Counted from the band itself: the sparse mask's bricks, the map's working set.
+  const std::uint64_t estimate =
+    band.memoryBytes() + FreeSpace::estimateBytes(band) +
+    VisibilityMap::estimateBytes(band, resolveThreads(run.visibility.threads));
+  checkMemory(estimate, memory_limit_,
+              "the free space and visibility map of " + std::to_string(band.size()) +
+                " mixed cells");
 }
 
 template <typename PointInT, typename PointOutT>
@@ -272,6 +287,7 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::computeResults(
   run.times.band_ms = detail::millisecondsSince(start);
 
   start = Clock::now();
+  checkBandMemory(results.band, run);
   results.free_space = FreeSpace(results.band);
   run.times.free_space_ms = detail::millisecondsSince(start);
 
@@ -279,7 +295,7 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::computeResults(
   results.map =
     VisibilityMap::compute(results.band, results.free_space, run.visibility, progress_);
   if (!keep_free_space_)
-    results.free_space = FreeSpace(); // the whole-grid mask is no longer needed
+    results.free_space = FreeSpace(); // the mask is no longer needed
   run.times.visibility_ms = detail::millisecondsSince(start);
 
   start = Clock::now();

@@ -17,18 +17,29 @@ inFreeBlock(const Eigen::Vector3i& s)
 
 } // namespace
 
-SegmentTable::SegmentTable(const FreeSpace& free_space, int max_distance)
-    : free_space_(&free_space)
-    , max_distance_(max_distance)
+SegmentTable::SegmentTable(int max_distance)
+    : max_distance_(max_distance)
 {
   if (max_distance < 0)
     throw Error("segment table: negative distance");
-  const int w = 2 * max_distance + 1;
-  spans_.assign(static_cast<std::size_t>(w) * w * w, Span{});
-  const std::int64_t sy = free_space.strideY(), sz = free_space.strideZ();
+  window_bricks_ = FreeSpaceWindow::bricksFor(max_distance);
+  const std::int32_t side = window_bricks_ * FreeSpace::kBrickSide;
+  const std::int32_t sy = side, sz = side * side;
   auto linear = [&](const Eigen::Vector3i& s) {
-    return std::int64_t{s.x()} + sy * s.y() + sz * s.z();
+    return s.x() + sy * s.y() + sz * s.z();
   };
+  const int w = 2 * max_distance + 1;
+  row_start_.assign(static_cast<std::size_t>(w) * w, 0);
+  std::int32_t stored = 0;
+  for (int z = -max_distance; z <= max_distance; ++z)
+    for (int y = -max_distance; y <= max_distance; ++y) {
+      const int half = max_distance - std::abs(y) - std::abs(z);
+      row_start_[static_cast<std::size_t>((y + max_distance) +
+                                          w * (z + max_distance))] = stored;
+      if (half >= 0)
+        stored += 2 * half + 1;
+    }
+  spans_.assign(static_cast<std::size_t>(stored), Span{});
 
   for (int z = -max_distance; z <= max_distance; ++z)
     for (int y = -max_distance; y <= max_distance; ++y)
@@ -60,7 +71,7 @@ SegmentTable::SegmentTable(const FreeSpace& free_space, int max_distance)
             singles_.push_back(linear(s.subcells[0]));
             single_length_.push_back(length);
           } else {
-            std::array<std::int64_t, 4> q;
+            std::array<std::int32_t, 4> q;
             for (int i = 0; i < 4; ++i) // pad a pair by repeating it
               q[static_cast<std::size_t>(i)] =
                 linear(s.subcells[static_cast<std::size_t>(i % s.count)]);
@@ -71,21 +82,27 @@ SegmentTable::SegmentTable(const FreeSpace& free_space, int max_distance)
         span.single_end = static_cast<std::int32_t>(singles_.size());
         span.multi_end = static_cast<std::int32_t>(multis_.size());
       }
-  words_ = free_space.memoryBytes() > 0 ? free_space_->wordData() : nullptr;
 }
 
 bool
-SegmentTable::sees(const CellCoord& a, const CellCoord& b, double opacity) const
+SegmentTable::sees(const FreeSpace& free_space,
+                   const CellCoord& a,
+                   const CellCoord& b,
+                   double opacity) const
 {
   const Eigen::Vector3i d = b - a;
   if (d.cwiseAbs().sum() > max_distance_)
     throw Error("segment table: offset beyond the table's distance");
-  return sees(free_space_->linearIndex(FreeSpace::centre(a)), d, opacity);
+  FreeSpaceWindow window(window_bricks_);
+  window.load(free_space, a.unaryExpr([](int v) { return v >> 3; }));
+  return sees(window, window.linearIndex(FreeSpace::centre(a)), d, opacity);
 }
 
 std::size_t
 SegmentTable::checksFor(const Eigen::Vector3i& d) const
 {
+  if (d.cwiseAbs().sum() > max_distance_)
+    throw Error("segment table: offset beyond the table's distance");
   const Span& span = spans_[spanIndex(d)];
   return static_cast<std::size_t>(span.single_end - span.single_begin) +
          static_cast<std::size_t>(span.multi_end - span.multi_begin);

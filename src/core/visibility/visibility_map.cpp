@@ -1,4 +1,6 @@
 #include <visfeat/core/common/error.h>
+#include <visfeat/core/visibility/band_tiles.h>
+#include <visfeat/core/visibility/free_space_window.h>
 #include <visfeat/core/visibility/segment_table.h>
 #include <visfeat/core/visibility/visibility_map.h>
 
@@ -26,7 +28,7 @@ struct RingScratch
 int
 radiusOf(CellId c,
          const VoxelBand& band,
-         const FreeSpace& free_space,
+         const FreeSpaceWindow& window,
          const SegmentTable& table,
          const VisibilityMap::Parameters& parameters,
          RingScratch& scratch,
@@ -34,7 +36,7 @@ radiusOf(CellId c,
 {
   const std::uint32_t stamp = static_cast<std::uint32_t>(c) + 1;
   const CellCoord origin = band.coord(c);
-  const std::int64_t base = free_space.linearIndex(FreeSpace::centre(origin));
+  const std::int32_t base = window.linearIndex(FreeSpace::centre(origin));
   scratch.ring.assign(1, c);
   scratch.mark[static_cast<std::size_t>(c)] = stamp;
   for (int k = 1; k <= parameters.max_radius; ++k) {
@@ -49,7 +51,7 @@ radiusOf(CellId c,
       return parameters.max_radius;
     for (const CellId n : scratch.next) {
       ++tests;
-      if (!table.sees(base, band.coord(n) - origin, parameters.opacity))
+      if (!table.sees(window, base, band.coord(n) - origin, parameters.opacity))
         return k - 1;
     }
     scratch.ring.swap(scratch.next);
@@ -81,26 +83,25 @@ VisibilityMap::compute(const VoxelBand& band,
   map.parameters_ = parameters;
   const std::size_t n = band.size();
   map.radii_.assign(n, 0);
-  const SegmentTable table(free_space, parameters.max_radius);
+  const SegmentTable table(parameters.max_radius);
+  const BandTiles tiles(band);
 
   const int threads = resolveThreads(parameters.threads);
-  constexpr std::int64_t kChunk = 512;
   std::atomic<std::size_t> done{0};
   std::uint64_t tests = 0;
 #pragma omp parallel num_threads(threads) reduction(+ : tests)
   {
     RingScratch scratch(n);
+    FreeSpaceWindow window(table.windowBricks());
 #pragma omp for schedule(dynamic, 1)
-    for (std::int64_t chunk = 0;
-         chunk < (static_cast<std::int64_t>(n) + kChunk - 1) / kChunk; ++chunk) {
-      const std::int64_t end =
-        std::min<std::int64_t>(static_cast<std::int64_t>(n), (chunk + 1) * kChunk);
-      for (std::int64_t c = chunk * kChunk; c < end; ++c)
-        map.radii_[static_cast<std::size_t>(c)] = static_cast<std::uint8_t>(radiusOf(
-          static_cast<CellId>(c), band, free_space, table, parameters, scratch, tests));
+    for (std::int64_t t = 0; t < static_cast<std::int64_t>(tiles.size()); ++t) {
+      const auto tile = static_cast<std::size_t>(t);
+      window.load(free_space, tiles.brick(tile));
+      for (const CellId* c = tiles.cellsBegin(tile); c != tiles.cellsEnd(tile); ++c)
+        map.radii_[static_cast<std::size_t>(*c)] = static_cast<std::uint8_t>(
+          radiusOf(*c, band, window, table, parameters, scratch, tests));
       const std::size_t so_far =
-        done.fetch_add(static_cast<std::size_t>(end - chunk * kChunk)) +
-        static_cast<std::size_t>(end - chunk * kChunk);
+        done.fetch_add(tiles.cellCount(tile)) + tiles.cellCount(tile);
       if (progress && omp_get_thread_num() == 0)
         progress(so_far, n);
     }
@@ -109,6 +110,18 @@ VisibilityMap::compute(const VoxelBand& band,
     progress(n, n);
   map.tests_ = tests;
   return map;
+}
+
+std::uint64_t
+VisibilityMap::estimateBytes(const VoxelBand& band, int threads)
+{
+  const std::uint64_t n = band.size();
+  const std::uint64_t window_side =
+    std::uint64_t{16} *
+    static_cast<std::uint64_t>(FreeSpaceWindow::bricksFor(kMaxRadius));
+  const std::uint64_t per_thread = 4 * n + window_side * window_side * window_side / 8;
+  return n /* radii */ + 12 * n /* tiles */ +
+         static_cast<std::uint64_t>(std::max(threads, 1)) * per_thread;
 }
 
 VisibilityMap

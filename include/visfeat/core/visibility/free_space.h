@@ -15,7 +15,7 @@ isVisible(double blocked_length, double opacity)
   return blocked_length <= 0.0 || blocked_length < opacity;
 }
 
-/** \brief The eroded occluder as a bit-packed mask of 2x2x2 subcells.
+/** \brief The eroded occluder as a bit-packed mask of 2x2x2 subcells, stored sparse.
  *
  * Every cell is split into 2x2x2 subcells. A subcell is free when it belongs to a mixed
  * cell or touches such a subcell by a face, edge or corner; the rest of space (outside
@@ -25,42 +25,44 @@ isVisible(double blocked_length, double opacity)
  * with an opacity, when the blocked stretches add up to less than the opacity.
  *
  * Cell centres are subcell-grid vertices: the centre of cell c is the lattice point
- * 2c + 1 in subcell units, so the test is exact. One bit per subcell: (2 dims)^3 bits.
+ * 2c + 1 in subcell units, so the test is exact.
+ *
+ * Storage: bricks of kBrickSide^3 subcells (8^3 cells, 512 bytes, one 16-bit row per
+ * (y, z)) allocated only where a mixed cell frees a subcell, kept sorted by brick key.
+ * Memory follows the band (a surface), not the grid: about 8-40 bytes per mixed cell
+ * on the generated models (see visfeat_benchmark), and no per-grid table. A missing
+ * brick is all occluded. The visibility map reads it through FreeSpaceWindow, a
+ * dense copy of the bricks around one brick of sources.
  */
 class FreeSpace
 {
 public:
+  /** \brief Subcells a brick side (8 cells). */
+  static constexpr int kBrickSide = 16;
+  /** \brief 16-bit rows a brick: one per (y, z), bit x. */
+  static constexpr int kBrickRows = kBrickSide * kBrickSide;
+
   FreeSpace() = default;
   explicit FreeSpace(const VoxelBand& band);
 
-  /** \brief Bytes of the mask for a grid, for memory checks before building. */
-  static std::uint64_t estimateBytes(const GridSpec& grid);
+  /** \brief Exact bytes FreeSpace(band) will hold, counted from the band before
+   * building (for memory checks). */
+  static std::uint64_t estimateBytes(const VoxelBand& band);
 
   /** \brief Subcells per axis (twice the grid's dims). */
   const Eigen::Vector3i& dims() const { return dims_; }
 
-  /** \brief Linear index of subcell s (s must lie inside the mask). */
-  std::int64_t linearIndex(const Eigen::Vector3i& s) const
-  {
-    return s.x() + stride_y_ * s.y() + stride_z_ * s.z();
-  }
+  /** \brief Bricks per axis (the grid's dims / 8, rounded up). */
+  const Eigen::Vector3i& brickDims() const { return brick_dims_; }
 
-  std::int64_t strideY() const { return stride_y_; }
+  /** \brief Whether subcell s is free; everything outside the mask is occluded.
+   * O(log bricks): for tests and single queries; the map uses FreeSpaceWindow. */
+  bool isFree(const Eigen::Vector3i& s) const;
 
-  std::int64_t strideZ() const { return stride_z_; }
-
-  bool isFreeAt(std::int64_t linear) const
-  {
-    return (words_[static_cast<std::size_t>(linear >> 6)] >> (linear & 63)) & 1u;
-  }
-
-  /** \brief Whether subcell s is free; everything outside the mask is occluded. */
-  bool isFree(const Eigen::Vector3i& s) const
-  {
-    if (!((s.array() >= 0).all() && (s.array() < dims_.array()).all()))
-      return false;
-    return isFreeAt(linearIndex(s));
-  }
+  /** \brief The 16-bit rows (index y + 16 z, bit x, in brick-local subcells) of the
+   * brick at brick coordinates b, or nullptr when none is allocated (all occluded,
+   * also outside the grid). */
+  const std::uint16_t* brickRows(const Eigen::Vector3i& b) const;
 
   /** \brief The lattice point (subcell units) at the centre of cell c. */
   static Eigen::Vector3i centre(const CellCoord& c)
@@ -79,16 +81,29 @@ public:
     return isVisible(blockedLength(a, b), opacity);
   }
 
-  std::uint64_t memoryBytes() const { return words_.size() * sizeof(std::uint64_t); }
+  /** \brief Allocated bricks. */
+  std::size_t brickCount() const { return brick_keys_.size(); }
 
-  /** \brief The packed bits, 64 subcells a word, linearIndex() order. */
-  const std::uint64_t* wordData() const { return words_.data(); }
+  /** \brief Bytes held (bricks and their keys). */
+  std::uint64_t memoryBytes() const;
 
 private:
+  std::uint64_t brickKey(const Eigen::Vector3i& b) const
+  {
+    return static_cast<std::uint64_t>(b.x()) +
+           static_cast<std::uint64_t>(brick_dims_.x()) *
+             (static_cast<std::uint64_t>(b.y()) +
+              static_cast<std::uint64_t>(brick_dims_.y()) *
+                static_cast<std::uint64_t>(b.z()));
+  }
+
+  /** Slot of the brick with this key, or -1. */
+  std::int64_t findBrick(std::uint64_t key) const;
+
   Eigen::Vector3i dims_{0, 0, 0};
-  std::int64_t stride_y_ = 0;
-  std::int64_t stride_z_ = 0;
-  std::vector<std::uint64_t> words_;
+  Eigen::Vector3i brick_dims_{0, 0, 0};
+  std::vector<std::uint64_t> brick_keys_; // sorted
+  std::vector<std::uint16_t> rows_;       // kBrickRows per brick, brick_keys_ order
 };
 
 } // namespace visfeat

@@ -25,8 +25,9 @@ using ProgressCallback = std::function<void(std::size_t done, std::size_t total)
  * ring with one hidden cell, and capped at max_radius. A ring left empty because the
  * BFS ran out of cells counts as visible.
  *
- * Cells are independent, so the work is spread over threads cell by cell and the
- * result is the same for any thread count.
+ * Cells are independent, so the work is spread over threads brick by brick of 8^3
+ * cells (BandTiles), each brick reading a dense FreeSpaceWindow of the sparse mask;
+ * the result is the same for any thread count.
  */
 class VisibilityMap
 {
@@ -67,6 +68,10 @@ public:
                                const FreeSpace& free_space,
                                const Parameters& parameters,
                                const ProgressCallback& progress = {});
+
+  /** \brief Bytes compute() allocates for a band (radii, tiles, per-thread ring marks
+   * and windows), for memory checks before it runs. */
+  static std::uint64_t estimateBytes(const VoxelBand& band, int threads);
 
   /** \brief A map with the given radii instead of computed ones: for small hand-made
    * bands in tests, or radii computed elsewhere. radii[c] is the radius of band cell c
