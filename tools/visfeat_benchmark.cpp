@@ -44,7 +44,7 @@ const char* const kProgram = "visfeat_benchmark";
 
 constexpr int kDefaultMaxRadius = visfeat::kDefaultMinRadius; // the estimator's cap
 constexpr double kDefaultOpacity = visfeat::VisibilityMap::Parameters{}.opacity;
-constexpr double kSpacingCells = 0.5;
+constexpr double kSpacingCells = 0.5; // the default; -spacing changes it
 constexpr int kBaselineK = 30;
 
 void
@@ -84,6 +84,10 @@ printHelp(const char* program)
   print_info("    -seed K             = rotation and sampling seed (default: ");
   print_value("1");
   print_info(")\n");
+  print_info("    -spacing S          = point spacing in cells (default: ");
+  print_value("%g", kSpacingCells);
+  print_info("; up to 0.7 keeps the band connected, e.g. for 2048 cells where\n"
+             "                          0.5 would not fit in memory)\n");
   print_info("    -no_baseline        = skip PCL's normal estimation\n");
   print_info("    -csv                = comma-separated output (notes go to "
              "stderr)\n");
@@ -94,8 +98,9 @@ printHelp(const char* program)
     "tests\n"
     "  (millions); peak_MiB = peak resident memory during the run (see the note "
     "printed);\n"
-    "  data_MiB = band + free-space mask + radii; ratio = visfeat total / normals "
-    "total.\n");
+    "  data_MiB = band + free-space mask + radii; B/cell, pk_B/c = data_MiB and "
+    "peak_MiB\n"
+    "  in bytes per mixed cell; ratio = visfeat total / normals total.\n");
 }
 
 int
@@ -188,14 +193,16 @@ public:
       std::printf(
         "shape,resolution,method,points,mixed_cells,repair_cells,grid_s,band_s,"
         "free_space_s,visibility_s,output_s,phase_sum_s,total_s,mixed_cells_per_s,"
-        "pair_tests,peak_rss_mib,structures_mib,ratio_visfeat_over_normals,error\n");
+        "pair_tests,peak_rss_mib,structures_mib,structure_bytes_per_mixed_cell,"
+        "peak_bytes_per_mixed_cell,ratio_visfeat_over_normals,error\n");
       return;
     }
     std::printf(
-      "%-16s %5s %-8s %9s %9s %7s %7s %7s %7s %7s %7s %8s %8s %9s %8s %8s %6s\n",
+      "%-16s %5s %-8s %9s %9s %7s %7s %7s %7s %7s %7s %8s %8s %9s %8s %8s %6s %6s "
+      "%6s\n",
       "shape", "res", "method", "points", "mixed", "repair", "grid_s", "band_s",
       "free_s", "vis_s", "out_s", "total_s", "Mcell/s", "tests(M)", "peak_MiB",
-      "data_MiB", "ratio");
+      "data_MiB", "B/cell", "pk_B/c", "ratio");
   }
 
   void row(const Row& r) const
@@ -205,14 +212,15 @@ public:
       if (r.visfeat)
         std::printf(
           "%s,%d,%s,%zu,%zu,%zu,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.1f,%llu,%.1f,%.2f,"
-          ",%s\n",
+          "%.1f,%.1f,,%s\n",
           r.shape.c_str(), r.resolution, r.method.c_str(), r.points, r.mixed, r.repair,
           p.grid_ms / 1e3, p.band_ms / 1e3, p.free_space_ms / 1e3,
           p.visibility_ms / 1e3, p.output_ms / 1e3, p.total() / 1e3, r.total_s,
           r.cells_per_s, static_cast<unsigned long long>(r.tests), r.peak_mib,
-          r.data_mib, csvText(r.error).c_str());
+          r.data_mib, bytesPerCell(r.data_mib, r.mixed),
+          bytesPerCell(r.peak_mib, r.mixed), csvText(r.error).c_str());
       else
-        std::printf("%s,%d,%s,%zu,,,,,,,,,%.6f,,,%.1f,,%s,%s\n", r.shape.c_str(),
+        std::printf("%s,%d,%s,%zu,,,,,,,,,%.6f,,,%.1f,,,,%s,%s\n", r.shape.c_str(),
                     r.resolution, r.method.c_str(), r.points, r.total_s, r.peak_mib,
                     r.ratio > 0 ? std::to_string(r.ratio).c_str() : "",
                     csvText(r.error).c_str());
@@ -225,24 +233,31 @@ public:
     else if (r.visfeat)
       std::printf(
         "%-16s %5d %-8s %9zu %9zu %7zu %7.3f %7.3f %7.3f %7.3f %7.3f %8.3f %8.3f "
-        "%9.1f %8.1f %8.1f %6s\n",
+        "%9.1f %8.1f %8.1f %6.0f %6.0f %6s\n",
         r.shape.c_str(), r.resolution, r.method.c_str(), r.points, r.mixed, r.repair,
         p.grid_ms / 1e3, p.band_ms / 1e3, p.free_space_ms / 1e3, p.visibility_ms / 1e3,
         p.output_ms / 1e3, r.total_s, r.cells_per_s / 1e6,
-        static_cast<double>(r.tests) / 1e6, r.peak_mib, r.data_mib, "-");
+        static_cast<double>(r.tests) / 1e6, r.peak_mib, r.data_mib,
+        bytesPerCell(r.data_mib, r.mixed), bytesPerCell(r.peak_mib, r.mixed), "-");
     else {
       char ratio[32] = "-";
       if (r.ratio > 0)
         std::snprintf(ratio, sizeof(ratio), "%.2f", r.ratio);
       std::printf(
-        "%-16s %5d %-8s %9zu %9s %7s %7s %7s %7s %7s %7s %8.3f %8s %9s %8.1f %8s %6s\n",
+        "%-16s %5d %-8s %9zu %9s %7s %7s %7s %7s %7s %7s %8.3f %8s %9s %8.1f %8s %6s "
+        "%6s %6s\n",
         r.shape.c_str(), r.resolution, r.method.c_str(), r.points, "-", "-", "-", "-",
-        "-", "-", "-", r.total_s, "-", "-", r.peak_mib, "-", ratio);
+        "-", "-", "-", r.total_s, "-", "-", r.peak_mib, "-", "-", "-", ratio);
     }
     std::fflush(stdout);
   }
 
 private:
+  static double bytesPerCell(double mib, std::size_t cells)
+  {
+    return cells > 0 ? mib * 1024.0 * 1024.0 / static_cast<double>(cells) : 0.0;
+  }
+
   static std::string csvText(std::string text)
   {
     for (char& c : text)
@@ -263,6 +278,7 @@ struct Settings
   int max_radius = kDefaultMaxRadius;
   double opacity = kDefaultOpacity;
   long long seed = 1;
+  double spacing = kSpacingCells; // cells
   bool baseline = true;
   bool csv = false;
 };
@@ -315,11 +331,10 @@ runVisfeat(const Settings& s,
           : 0.0;
       // The estimator releases its FreeSpace after the map; its size follows from
       // the band (exactly).
-      best.data_mib =
-        static_cast<double>(band.memoryBytes() +
-                            visfeat::FreeSpace::estimateBytes(band) +
-                            estimator.getVisibilityMap().radii().size()) /
-        (1024.0 * 1024.0);
+      best.data_mib = static_cast<double>(band.memoryBytes() +
+                                          visfeat::FreeSpace::estimateBytes(band) +
+                                          estimator.getVisibilityMap().radii().size()) /
+                      (1024.0 * 1024.0);
     }
   }
   best.peak_mib = peak;
@@ -365,7 +380,7 @@ run(int argc, char** argv)
 {
   const vt::Arguments args(argc, argv,
                            {"-shapes", "-resolutions", "-threads", "-repeat",
-                            "-max_radius", "-opacity", "-seed"},
+                            "-max_radius", "-opacity", "-seed", "-spacing"},
                            {"-no_baseline", "-csv", "-h", "--help"});
   if (!args.ok())
     return fail(args.error());
@@ -382,7 +397,8 @@ run(int argc, char** argv)
       !args.getReal("-opacity", 0.0, visfeat::VisibilityMap::kMaxOpacity, s.opacity,
                     error) ||
       !args.getInteger("-seed", 0, std::numeric_limits<long long>::max(), s.seed,
-                       error))
+                       error) ||
+      !args.getReal("-spacing", 0.05, 2.0, s.spacing, error))
     return fail(error);
   s.baseline = !args.has("-no_baseline");
   s.csv = args.has("-csv");
@@ -423,7 +439,7 @@ run(int argc, char** argv)
     "(best reported); max_radius %d; opacity %g; seed %lld; spacing %g cells\n",
     std::thread::hardware_concurrency(), omp_threads,
     s.threads == 0 ? omp_threads : s.threads, s.threads == 0 ? " (all)" : "", s.repeat,
-    s.max_radius, s.opacity, s.seed, kSpacingCells);
+    s.max_radius, s.opacity, s.seed, s.spacing);
   std::fprintf(notes, "# peak_MiB: %s\n",
                memory.perRun()
                  ? "peak resident memory during each run (VmHWM, reset before "
@@ -444,7 +460,7 @@ run(int argc, char** argv)
       {
         visfeat::synthetic::SamplingOptions options;
         options.count =
-          visfeat::synthetic::samplesForSpacing(model, resolution, kSpacingCells);
+          visfeat::synthetic::samplesForSpacing(model, resolution, s.spacing);
         options.seed = seed;
         const std::vector<Eigen::Vector3f> samples =
           visfeat::synthetic::sampleCadModel(model, options).points;
