@@ -176,7 +176,8 @@ struct Row
   std::uint64_t tests = 0;
   double peak_mib = 0.0;
   double data_mib = 0.0;
-  double ratio = 0.0; // baseline rows: visfeat total / this total
+  std::uint64_t mask_bytes = 0; // the free-space mask, part of data_mib
+  double ratio = 0.0;           // baseline rows: visfeat total / this total
   std::string error;
 };
 
@@ -331,8 +332,8 @@ runVisfeat(const Settings& s,
           : 0.0;
       // The estimator releases its FreeSpace after the map; its size follows from
       // the band (exactly).
-      best.data_mib = static_cast<double>(band.memoryBytes() +
-                                          visfeat::FreeSpace::estimateBytes(band) +
+      best.mask_bytes = visfeat::FreeSpace::estimateBytes(band);
+      best.data_mib = static_cast<double>(band.memoryBytes() + best.mask_bytes +
                                           estimator.getVisibilityMap().radii().size()) /
                       (1024.0 * 1024.0);
     }
@@ -483,6 +484,14 @@ run(int argc, char** argv)
       v.shape = shape;
       v.resolution = resolution;
       table.row(v);
+      if (v.error.empty() && v.mixed > 0) {
+        std::fprintf(notes,
+                     "# %s %d: free-space mask %.1f MiB, %.1f bytes per mixed cell\n",
+                     shape.c_str(), resolution,
+                     static_cast<double>(v.mask_bytes) / (1024.0 * 1024.0),
+                     static_cast<double>(v.mask_bytes) / static_cast<double>(v.mixed));
+        std::fflush(notes);
+      }
       if (!v.error.empty())
         status = 1;
 

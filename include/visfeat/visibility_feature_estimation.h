@@ -280,9 +280,9 @@ public:
     progress_ = progress;
   }
 
-  /** \brief Keep the whole-grid free-space mask after compute() (default false: it is
-   * released as soon as the visibility map is done; about (2 dims)^3 bits, 20 MiB at
-   * resolution 256, 140 MiB at 512). */
+  /** \brief Keep the free-space mask after compute() (default false: it is released
+   * as soon as the visibility map is done; sparse, about 12 bytes a mixed cell, see
+   * FreeSpace::memoryBytes()). */
   inline void setKeepFreeSpace(bool keep) { keep_free_space_ = keep; }
   inline bool getKeepFreeSpace() const { return keep_free_space_; }
 

@@ -29,7 +29,7 @@ isVisible(double blocked_length, double opacity)
  *
  * Storage: bricks of kBrickSide^3 subcells (8^3 cells, 512 bytes, one 16-bit row per
  * (y, z)) allocated only where a mixed cell frees a subcell, kept sorted by brick key.
- * Memory follows the band (a surface), not the grid: about 8-40 bytes per mixed cell
+ * Memory follows the band (a surface), not the grid: about 12 bytes per mixed cell
  * on the generated models (see visfeat_benchmark), and no per-grid table. A missing
  * brick is all occluded. The visibility map reads it through FreeSpaceWindow, a
  * dense copy of the bricks around one brick of sources.
