@@ -14,6 +14,7 @@
 #include <gtest/gtest.h>
 #include <pcl/point_types.h>
 
+#include <ostream>
 #include <sstream>
 #include <string>
 
@@ -28,6 +29,14 @@ struct MapCase
   double opacity;
   int max_radius;
 };
+
+// For gtest's messages and ctest's test list (instead of the struct's bytes).
+void
+PrintTo(const MapCase& c, std::ostream* os)
+{
+  *os << c.model << " noise " << c.noise_cells << " opacity " << c.opacity << " cap "
+      << c.max_radius;
+}
 
 std::string
 caseName(const ::testing::TestParamInfo<MapCase>& info)
