@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <cstdlib>
+#include <thread>
 
 namespace visfeat_test {
 namespace reference {
@@ -76,34 +77,41 @@ denseRadii(const visfeat::VoxelBand& band, int max_radius, double opacity)
     return blocked <= 0.0 || blocked < opacity;
   };
 
+  // Cells are independent: two threads, each its own BFS scratch.
   std::vector<int> radii(band.size(), 0);
-  std::vector<std::uint32_t> mark(band.size(), 0);
-  std::vector<CellId> ring, next;
-  for (std::size_t c = 0; c < band.size(); ++c) {
-    const auto stamp = static_cast<std::uint32_t>(c + 1);
-    const CellCoord origin = band.coord(static_cast<CellId>(c));
-    ring.assign(1, static_cast<CellId>(c));
-    mark[c] = stamp;
-    int radius = max_radius;
-    for (int k = 1; k <= max_radius && radius == max_radius; ++k) {
-      next.clear();
-      for (const CellId r : ring)
-        for (const CellId n : band.neighbours(r))
-          if (n != visfeat::kNoCell && mark[static_cast<std::size_t>(n)] != stamp) {
-            mark[static_cast<std::size_t>(n)] = stamp;
-            next.push_back(n);
-          }
-      if (next.empty())
-        break;
-      for (const CellId n : next)
-        if (!sees(origin, band.coord(n))) {
-          radius = k - 1;
+  auto radiiOf = [&](std::size_t first, std::size_t last) {
+    std::vector<std::uint32_t> mark(band.size(), 0);
+    std::vector<CellId> ring, next;
+    for (std::size_t c = first; c < last; ++c) {
+      const auto stamp = static_cast<std::uint32_t>(c + 1);
+      const CellCoord origin = band.coord(static_cast<CellId>(c));
+      ring.assign(1, static_cast<CellId>(c));
+      mark[c] = stamp;
+      int radius = max_radius;
+      for (int k = 1; k <= max_radius && radius == max_radius; ++k) {
+        next.clear();
+        for (const CellId r : ring)
+          for (const CellId n : band.neighbours(r))
+            if (n != visfeat::kNoCell && mark[static_cast<std::size_t>(n)] != stamp) {
+              mark[static_cast<std::size_t>(n)] = stamp;
+              next.push_back(n);
+            }
+        if (next.empty())
           break;
-        }
-      ring.swap(next);
+        for (const CellId n : next)
+          if (!sees(origin, band.coord(n))) {
+            radius = k - 1;
+            break;
+          }
+        ring.swap(next);
+      }
+      radii[c] = radius;
     }
-    radii[c] = radius;
-  }
+  };
+  const std::size_t half = band.size() / 2;
+  std::thread second(radiiOf, half, band.size());
+  radiiOf(0, half);
+  second.join();
   return radii;
 }
 

@@ -4,7 +4,7 @@
 // the reference for whole maps on large bands: one dense bit per subcell of the whole
 // grid, the stretches of every offset from decomposeLatticeSegment (itself checked
 // against the brute-force reference on every pair of the small bands), and the ring
-// BFS of DESIGN.md. Simple, single-threaded, (2 dims)^3 bits: for tests at 256 cells.
+// BFS of DESIGN.md. Simple, two threads, (2 dims)^3 bits: for tests at 256 cells.
 // It shares no code with FreeSpace, FreeSpaceWindow, SegmentTable, BandTiles or
 // VisibilityMap.
 
