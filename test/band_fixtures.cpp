@@ -47,6 +47,25 @@ cellsWhere(const GridSpec& grid, int margin, Pred keep)
 
 } // namespace
 
+SampledCadModel
+sampleCadCloud(const visfeat::synthetic::CadModel& model,
+               int resolution,
+               std::uint64_t seed,
+               double noise_cells)
+{
+  namespace synthetic = visfeat::synthetic;
+  synthetic::SamplingOptions options;
+  options.count = synthetic::samplesForSpacing(model, resolution, 0.5);
+  options.seed = seed;
+  options.noise_sigma = noise_cells * synthetic::cellSize(model, resolution);
+  SampledCadModel sampled;
+  sampled.samples = synthetic::sampleCadModel(model, options);
+  sampled.cloud = std::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
+  for (const Eigen::Vector3f& p : sampled.samples.points)
+    sampled.cloud->push_back(pcl::PointXYZ(p.x(), p.y(), p.z()));
+  return sampled;
+}
+
 GridSpec
 cubeGrid(int n)
 {

@@ -2,6 +2,7 @@
 
 // Small bands and clouds the tests generate for themselves (no files are read).
 
+#include <support/cad_models.h>
 #include <visfeat/core/band/voxel_band.h>
 #include <visfeat/core/grid/grid_spec.h>
 
@@ -80,6 +81,20 @@ pcl::PointCloud<pcl::PointXYZ> syntheticShapeCloud(const std::string& shape,
                                                    std::uint64_t seed,
                                                    int resolution,
                                                    double spacing_cells = 0.5);
+
+/** \brief A generated CAD model sampled as the benchmarks and acceptance tests do. */
+struct SampledCadModel
+{
+  visfeat::synthetic::CadSamples samples;
+  pcl::PointCloud<pcl::PointXYZ>::Ptr cloud;
+};
+
+/** \brief `model` (already rotated) sampled 0.5 cells apart on a grid of `resolution`
+ * cells, with seed `seed` and Gaussian noise of `noise_cells` nominal cells. */
+SampledCadModel sampleCadCloud(const visfeat::synthetic::CadModel& model,
+                               int resolution,
+                               std::uint64_t seed,
+                               double noise_cells = 0.0);
 
 /** \brief Uniform random points on a unit square (side 1, centred at the origin) with
  * axes u, v; `count` points. */

@@ -174,6 +174,13 @@ TEST(FreeSpace, MemoryFollowsTheBandNotTheGrid)
   EXPECT_LE(fs.brickCount(), 8u);
   EXPECT_LT(fs.memoryBytes(), 8u * 1024u);
   EXPECT_TRUE(fs.isFree(FreeSpace::centre(CellCoord(3, 4, 5))));
+  // The same count is offered before allocating, once; a refusal leaves nothing built.
+  std::vector<std::uint64_t> offered;
+  const FreeSpace checked(band, [&](std::uint64_t bytes) { offered.push_back(bytes); });
+  EXPECT_EQ(offered, std::vector<std::uint64_t>{fs.memoryBytes()});
+  EXPECT_EQ(checked.memoryBytes(), fs.memoryBytes());
+  EXPECT_THROW(FreeSpace(band, [](std::uint64_t) { throw visfeat::Error("refused"); }),
+               visfeat::Error);
   EXPECT_FALSE(fs.isFree(Vec3i(3000, 3000, 3000)));
 }
 

@@ -58,15 +58,10 @@ TEST_P(WholeMapTest, RadiiMatchTheDenseMapOnEveryCell)
   const std::uint64_t seed = 7 + c.model.size();
   const synthetic::CadModel model = synthetic::rotated(
     synthetic::cadModelByName(c.model), synthetic::randomRotation(seed * 131));
-  synthetic::SamplingOptions options;
-  options.count = synthetic::samplesForSpacing(model, kResolution, 0.5);
-  options.seed = seed;
-  options.noise_sigma = c.noise_cells * synthetic::cellSize(model, kResolution);
-  const synthetic::CadSamples samples = synthetic::sampleCadModel(model, options);
-  pcl::PointCloud<pcl::PointXYZ> cloud;
-  for (const auto& p : samples.points)
-    cloud.push_back(pcl::PointXYZ(p.x(), p.y(), p.z()));
-  const visfeat::VoxelBand band = visfeat_test::bandFromCloud(cloud, kResolution);
+  const visfeat_test::SampledCadModel sampled =
+    visfeat_test::sampleCadCloud(model, kResolution, seed, c.noise_cells);
+  const visfeat::VoxelBand band =
+    visfeat_test::bandFromCloud(*sampled.cloud, kResolution);
   ASSERT_GT(band.size(), 100000u);
 
   const visfeat::FreeSpace free_space(band);

@@ -364,7 +364,9 @@ private:
 
   Run prepare() const;
   void checkMemoryBudget(const Run& run) const;
-  void checkBandMemory(const VoxelBand& band, const Run& run) const;
+  void checkBandMemory(const VoxelBand& band,
+                       std::uint64_t mask_bytes,
+                       const Run& run) const;
   typename PointCloudIn::ConstPtr smoothedSurface(Run& run) const;
   Results computeResults(Run& run, PointCloudOut& output) const;
   void labelPoints(const Results& results,

@@ -185,12 +185,12 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::checkMemoryBudget(
 
 template <typename PointInT, typename PointOutT>
 void
-VisibilityFeatureEstimation<PointInT, PointOutT>::checkBandMemory(const VoxelBand& band,
-                                                                  const Run& run) const
+VisibilityFeatureEstimation<PointInT, PointOutT>::checkBandMemory(
+  const VoxelBand& band, std::uint64_t mask_bytes, const Run& run) const
 {
   // Counted from the band itself: the sparse mask's bricks, the map's working set.
   const std::uint64_t estimate =
-    band.memoryBytes() + FreeSpace::estimateBytes(band) +
+    band.memoryBytes() + mask_bytes +
     VisibilityMap::estimateBytes(band, resolveThreads(run.visibility.threads));
   checkMemory(estimate, memory_limit_,
               "the free space and visibility map of " + std::to_string(band.size()) +
@@ -287,8 +287,9 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::computeResults(
   run.times.band_ms = detail::millisecondsSince(start);
 
   start = Clock::now();
-  checkBandMemory(results.band, run);
-  results.free_space = FreeSpace(results.band);
+  results.free_space = FreeSpace(results.band, [&](std::uint64_t mask_bytes) {
+    checkBandMemory(results.band, mask_bytes, run);
+  });
   run.times.free_space_ms = detail::millisecondsSince(start);
 
   start = Clock::now();

@@ -5,23 +5,13 @@
 
 namespace visfeat {
 
-std::uint64_t
-BandTiles::key(const Eigen::Vector3i& b) const
-{
-  return static_cast<std::uint64_t>(b.x()) +
-         static_cast<std::uint64_t>(brick_dims_.x()) *
-           (static_cast<std::uint64_t>(b.y()) +
-            static_cast<std::uint64_t>(brick_dims_.y()) *
-              static_cast<std::uint64_t>(b.z()));
-}
-
 BandTiles::BandTiles(const VoxelBand& band)
 {
   brick_dims_ = (band.grid().dims.array() + (kTileSide - 1)) / kTileSide;
   const std::size_t n = band.size();
   std::vector<std::uint64_t> cell_keys(n);
   for (std::size_t c = 0; c < n; ++c)
-    cell_keys[c] = key(brickOf(band.coord(static_cast<CellId>(c))));
+    cell_keys[c] = linearKey(brickOf(band.coord(static_cast<CellId>(c))), brick_dims_);
   cells_.resize(n);
   std::iota(cells_.begin(), cells_.end(), CellId{0});
   std::stable_sort(cells_.begin(), cells_.end(), [&](CellId a, CellId b) {
@@ -44,7 +34,7 @@ BandTiles::find(const Eigen::Vector3i& b) const
 {
   if (!((b.array() >= 0).all() && (b.array() < brick_dims_.array()).all()))
     return -1;
-  const std::uint64_t k = key(b);
+  const std::uint64_t k = linearKey(b, brick_dims_);
   const auto it = std::lower_bound(keys_.begin(), keys_.end(), k);
   if (it == keys_.end() || *it != k)
     return -1;

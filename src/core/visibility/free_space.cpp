@@ -7,6 +7,15 @@ namespace visfeat {
 namespace {
 
 constexpr int kBrickShift = 4; // log2(FreeSpace::kBrickSide)
+static_assert(1 << kBrickShift == FreeSpace::kBrickSide, "brick side is 2^kBrickShift");
+
+/** Bytes of a mask with this many bricks: the rows and the sorted keys. */
+std::uint64_t
+bytesOfBricks(std::size_t bricks)
+{
+  return bricks *
+         (sizeof(std::uint64_t) + FreeSpace::kBrickRows * sizeof(std::uint16_t));
+}
 
 /** The free block of mixed cell c: subcells [2c - 1, 2c + 2], clipped to the mask. */
 void
@@ -41,18 +50,12 @@ sortedBrickKeys(const VoxelBand& band,
 {
   std::vector<std::uint64_t> keys;
   keys.reserve(band.size() / 8 + 16);
-  auto key = [&](const Eigen::Vector3i& b) {
-    return static_cast<std::uint64_t>(b.x()) +
-           static_cast<std::uint64_t>(brick_dims.x()) *
-             (static_cast<std::uint64_t>(b.y()) +
-              static_cast<std::uint64_t>(brick_dims.y()) *
-                static_cast<std::uint64_t>(b.z()));
-  };
   // Compact whenever the scratch doubles, so it stays within a few times the bricks.
   std::size_t compact_at = band.size() / 4 + 1024;
   for (const CellCoord& c : band.coords()) {
-    forEachBrickOfBlock(c, dims,
-                        [&](const Eigen::Vector3i& b) { keys.push_back(key(b)); });
+    forEachBrickOfBlock(c, dims, [&](const Eigen::Vector3i& b) {
+      keys.push_back(linearKey(b, brick_dims));
+    });
     if (keys.size() >= compact_at) {
       std::sort(keys.begin(), keys.end());
       keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
@@ -73,11 +76,13 @@ brickDimsOf(const Eigen::Vector3i& subcell_dims)
 
 } // namespace
 
-FreeSpace::FreeSpace(const VoxelBand& band)
+FreeSpace::FreeSpace(const VoxelBand& band, const BeforeAllocating& before_allocating)
 {
   dims_ = 2 * band.grid().dims;
   brick_dims_ = brickDimsOf(dims_);
   brick_keys_ = sortedBrickKeys(band, dims_, brick_dims_);
+  if (before_allocating)
+    before_allocating(bytesOfBricks(brick_keys_.size()));
   rows_.assign(brick_keys_.size() * kBrickRows, 0);
 
   // A mixed cell frees its 2x2x2 subcells and every subcell touching them: the 4x4x4
@@ -86,7 +91,7 @@ FreeSpace::FreeSpace(const VoxelBand& band)
     Eigen::Vector3i lo, hi;
     freeBlock(c, dims_, lo, hi);
     forEachBrickOfBlock(c, dims_, [&](const Eigen::Vector3i& b) {
-      const std::int64_t slot = findBrick(brickKey(b));
+      const std::int64_t slot = findBrick(linearKey(b, brick_dims_));
       std::uint16_t* rows = rows_.data() + slot * kBrickRows;
       const Eigen::Vector3i origin = kBrickSide * b;
       const Eigen::Vector3i blo = (lo - origin).cwiseMax(0);
@@ -104,8 +109,7 @@ std::uint64_t
 FreeSpace::estimateBytes(const VoxelBand& band)
 {
   const Eigen::Vector3i dims = 2 * band.grid().dims;
-  const std::size_t bricks = sortedBrickKeys(band, dims, brickDimsOf(dims)).size();
-  return bricks * (sizeof(std::uint64_t) + kBrickRows * sizeof(std::uint16_t));
+  return bytesOfBricks(sortedBrickKeys(band, dims, brickDimsOf(dims)).size());
 }
 
 std::uint64_t
@@ -129,7 +133,7 @@ FreeSpace::brickRows(const Eigen::Vector3i& b) const
 {
   if (!((b.array() >= 0).all() && (b.array() < brick_dims_.array()).all()))
     return nullptr;
-  const std::int64_t slot = findBrick(brickKey(b));
+  const std::int64_t slot = findBrick(linearKey(b, brick_dims_));
   return slot < 0 ? nullptr : rows_.data() + slot * kBrickRows;
 }
 

@@ -1,4 +1,5 @@
 #include <visfeat/core/common/error.h>
+#include <visfeat/core/visibility/band_tiles.h>
 #include <visfeat/core/visibility/lattice_segment.h>
 #include <visfeat/core/visibility/segment_table.h>
 
@@ -94,7 +95,7 @@ SegmentTable::sees(const FreeSpace& free_space,
   if (d.cwiseAbs().sum() > max_distance_)
     throw Error("segment table: offset beyond the table's distance");
   FreeSpaceWindow window(window_bricks_);
-  window.load(free_space, a.unaryExpr([](int v) { return v >> 3; }));
+  window.load(free_space, BandTiles::brickOf(a));
   return sees(window, window.linearIndex(FreeSpace::centre(a)), d, opacity);
 }
 

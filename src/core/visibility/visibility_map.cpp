@@ -117,7 +117,7 @@ VisibilityMap::estimateBytes(const VoxelBand& band, int threads)
 {
   const std::uint64_t n = band.size();
   const std::uint64_t window_side =
-    std::uint64_t{16} *
+    std::uint64_t{FreeSpace::kBrickSide} *
     static_cast<std::uint64_t>(FreeSpaceWindow::bricksFor(kMaxRadius));
   const std::uint64_t per_thread = 4 * n + window_side * window_side * window_side / 8;
   return n /* radii */ + 12 * n /* tiles */ +

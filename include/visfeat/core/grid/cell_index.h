@@ -51,11 +51,8 @@ private:
 
   std::size_t brickOf(const CellCoord& c) const
   {
-    return static_cast<std::size_t>(c.x() >> kBrickShift) +
-           static_cast<std::size_t>(brick_dims_.x()) *
-             (static_cast<std::size_t>(c.y() >> kBrickShift) +
-              static_cast<std::size_t>(brick_dims_.y()) *
-                static_cast<std::size_t>(c.z() >> kBrickShift));
+    return static_cast<std::size_t>(
+      linearKey(c.unaryExpr([](int v) { return v >> kBrickShift; }), brick_dims_));
   }
 
   static std::size_t offsetInBrick(const CellCoord& c)

@@ -11,6 +11,17 @@ namespace visfeat {
 /** \brief Integer coordinates (i, j, k) of a cell of the grid. */
 using CellCoord = Eigen::Vector3i;
 
+/** \brief Linear key of integer coordinates c (each in [0, dims)) in a box of dims, x
+ * fastest: sorting by it sorts z-major. For cells, and for bricks of cells. */
+inline std::uint64_t
+linearKey(const Eigen::Vector3i& c, const Eigen::Vector3i& dims)
+{
+  return static_cast<std::uint64_t>(c.x()) +
+         static_cast<std::uint64_t>(dims.x()) *
+           (static_cast<std::uint64_t>(c.y()) +
+            static_cast<std::uint64_t>(dims.y()) * static_cast<std::uint64_t>(c.z()));
+}
+
 /** \brief The regular grid the band lives in: origin, cell size and dimensions.
  *
  * Cell (i, j, k) spans origin + cell_size * [i, i+1) x [j, j+1) x [k, k+1).
@@ -58,10 +69,7 @@ struct GridSpec
   /** \brief Linear key of a cell, x fastest; sorting by it sorts cells z-major. */
   std::uint64_t linearKey(const CellCoord& c) const
   {
-    return static_cast<std::uint64_t>(c.x()) +
-           static_cast<std::uint64_t>(dims.x()) *
-             (static_cast<std::uint64_t>(c.y()) +
-              static_cast<std::uint64_t>(dims.y()) * static_cast<std::uint64_t>(c.z()));
+    return visfeat::linearKey(c, dims);
   }
 
   /** \brief A world point in cell units: (p - origin) / cell_size, so that cell

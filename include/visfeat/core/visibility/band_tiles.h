@@ -43,8 +43,6 @@ public:
   }
 
 private:
-  std::uint64_t key(const Eigen::Vector3i& b) const;
-
   Eigen::Vector3i brick_dims_{0, 0, 0};
   std::vector<std::uint64_t> keys_; // sorted, one a tile
   std::vector<Eigen::Vector3i> bricks_;

@@ -3,6 +3,7 @@
 #include <visfeat/core/band/voxel_band.h>
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 namespace visfeat {
@@ -42,11 +43,19 @@ public:
   /** \brief 16-bit rows a brick: one per (y, z), bit x. */
   static constexpr int kBrickRows = kBrickSide * kBrickSide;
 
-  FreeSpace() = default;
-  explicit FreeSpace(const VoxelBand& band);
+  /** \brief Called with the exact bytes the mask will hold, before they are
+   * allocated; it may throw to refuse them (a memory check). */
+  using BeforeAllocating = std::function<void(std::uint64_t bytes)>;
 
-  /** \brief Exact bytes FreeSpace(band) will hold, counted from the band before
-   * building (for memory checks). */
+  FreeSpace() = default;
+  /** \brief The mask of a band; before_allocating, if given, is called once the
+   * bricks are counted and before they are allocated. */
+  explicit FreeSpace(const VoxelBand& band,
+                     const BeforeAllocating& before_allocating = {});
+
+  /** \brief Exact bytes FreeSpace(band) will hold, counted from the band (the same
+   * count FreeSpace(band) makes: to check memory while building, pass
+   * before_allocating instead of counting twice). */
   static std::uint64_t estimateBytes(const VoxelBand& band);
 
   /** \brief Subcells per axis (twice the grid's dims). */
@@ -88,16 +97,7 @@ public:
   std::uint64_t memoryBytes() const;
 
 private:
-  std::uint64_t brickKey(const Eigen::Vector3i& b) const
-  {
-    return static_cast<std::uint64_t>(b.x()) +
-           static_cast<std::uint64_t>(brick_dims_.x()) *
-             (static_cast<std::uint64_t>(b.y()) +
-              static_cast<std::uint64_t>(brick_dims_.y()) *
-                static_cast<std::uint64_t>(b.z()));
-  }
-
-  /** Slot of the brick with this key, or -1. */
+  /** Slot of the brick with this key (linearKey over brickDims()), or -1. */
   std::int64_t findBrick(std::uint64_t key) const;
 
   Eigen::Vector3i dims_{0, 0, 0};
