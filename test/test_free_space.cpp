@@ -129,7 +129,7 @@ TEST(FreeSpace, NeighboursAndSelfAlwaysSeeEachOther)
 }
 
 // A window is a dense copy of the sparse mask: the same bit for every subcell it
-// covers, bricks outside the grid occluded, and its linear index at its strides.
+// covers, bricks outside the grid occluded, and its cell index at its strides.
 TEST(FreeSpaceWindow, CopiesTheMaskAroundABrick)
 {
   const VoxelBand band =
@@ -140,25 +140,31 @@ TEST(FreeSpaceWindow, CopiesTheMaskAroundABrick)
   EXPECT_GT(fs.brickCount(), 1u);
   for (int bricks : {1, 3, 5}) {
     visfeat::FreeSpaceWindow window(bricks);
+    EXPECT_EQ(window.side(), 8 * bricks);
     for (const Vec3i& centre : {Vec3i(0, 0, 0), Vec3i(1, 0, 0), Vec3i(1, 1, 1)}) {
       window.load(fs, centre);
-      EXPECT_EQ(window.origin(), 16 * (centre - Vec3i::Constant(bricks / 2)));
+      EXPECT_EQ(window.origin(), 8 * (centre - Vec3i::Constant(bricks / 2)));
       std::size_t covered = 0;
       for (int z = -48; z < 80; ++z)
         for (int y = -48; y < 80; ++y)
           for (int x = -48; x < 80; ++x) {
             const Vec3i s(x, y, z);
-            if (!window.contains(s))
+            const CellCoord c(x >> 1, y >> 1, z >> 1);
+            ASSERT_EQ(window.isFree(s), window.contains(c) && fs.isFree(s))
+              << toString(s) << " window " << bricks << " around " << toString(centre);
+            if (!window.contains(c) || (x & 1) || (y & 1) || (z & 1))
               continue;
             ++covered;
-            const Vec3i l = s - window.origin();
-            ASSERT_EQ(window.linearIndex(s),
+            const Vec3i l = c - window.origin();
+            ASSERT_EQ(window.cellIndex(c),
                       l.x() + window.strideY() * l.y() + window.strideZ() * l.z());
-            ASSERT_EQ(window.isFreeAt(window.linearIndex(s)), fs.isFree(s))
-              << toString(s) << " window " << bricks << " around " << toString(centre);
+            int bits = 0;
+            for (int i = 0; i < 8; ++i)
+              bits |= fs.isFree(s + Vec3i(i & 1, (i >> 1) & 1, i >> 2)) << i;
+            ASSERT_EQ(window.freeBits(window.cellIndex(c)), bits) << toString(c);
           }
       EXPECT_EQ(covered,
-                static_cast<std::size_t>(16 * bricks) * 16 * bricks * 16 * bricks);
+                static_cast<std::size_t>(8 * bricks) * 8 * bricks * 8 * bricks);
     }
   }
   EXPECT_THROW(visfeat::FreeSpaceWindow(2), visfeat::Error);
@@ -261,7 +267,7 @@ TEST_P(ReferenceBandTest, SegmentTestMatchesReferenceOnAllPairs)
   };
   for (const CellCoord& a : band.coords()) {
     window.load(fs, visfeat::BandTiles::brickOf(a));
-    const std::int32_t base = window.linearIndex(FreeSpace::centre(a));
+    const std::int32_t base = window.cellIndex(a);
     for (int dz = -kMaxDistance; dz <= kMaxDistance; ++dz)
       for (int dy = -kMaxDistance; dy <= kMaxDistance; ++dy)
         for (int dx = -kMaxDistance; dx <= kMaxDistance; ++dx) {

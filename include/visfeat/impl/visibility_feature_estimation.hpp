@@ -191,7 +191,7 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::checkBandMemory(
   // Counted from the band itself: the sparse mask's bricks, the map's working set.
   const std::uint64_t estimate =
     band.memoryBytes() + mask_bytes +
-    VisibilityMap::estimateBytes(band, resolveThreads(run.visibility.threads));
+    VisibilityMap::estimateBytes(band, run.visibility);
   checkMemory(estimate, memory_limit_,
               "the free space and visibility map of " + std::to_string(band.size()) +
                 " mixed cells");

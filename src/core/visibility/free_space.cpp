@@ -6,26 +6,27 @@
 namespace visfeat {
 namespace {
 
-constexpr int kBrickShift = 4; // log2(FreeSpace::kBrickSide)
-static_assert(1 << kBrickShift == FreeSpace::kBrickSide, "brick side is 2^kBrickShift");
+constexpr int kBrickShift = 3; // log2(FreeSpace::kBrickCells)
+static_assert(1 << kBrickShift == FreeSpace::kBrickCells,
+              "brick side is 2^kBrickShift");
 
-/** Bytes of a mask with this many bricks: the rows and the sorted keys. */
+/** Bytes of a mask with this many bricks: the cell bytes and the sorted keys. */
 std::uint64_t
 bytesOfBricks(std::size_t bricks)
 {
-  return bricks *
-         (sizeof(std::uint64_t) + FreeSpace::kBrickRows * sizeof(std::uint16_t));
+  return bricks * (sizeof(std::uint64_t) + FreeSpace::kBrickBytes);
 }
 
-/** The free block of mixed cell c: subcells [2c - 1, 2c + 2], clipped to the mask. */
+/** The cells a mixed cell c frees subcells of: c and its 26 neighbours, clipped to the
+ * grid. */
 void
 freeBlock(const CellCoord& c,
           const Eigen::Vector3i& dims,
           Eigen::Vector3i& lo,
           Eigen::Vector3i& hi)
 {
-  lo = (2 * c - Eigen::Vector3i::Ones()).cwiseMax(0);
-  hi = (2 * c + Eigen::Vector3i::Constant(2)).cwiseMin(dims - Eigen::Vector3i::Ones());
+  lo = (c - Eigen::Vector3i::Ones()).cwiseMax(0);
+  hi = (c + Eigen::Vector3i::Ones()).cwiseMin(dims - Eigen::Vector3i::Ones());
 }
 
 /** Calls f(brick) for every brick that the free block of c touches. */
@@ -41,6 +42,24 @@ forEachBrickOfBlock(const CellCoord& c, const Eigen::Vector3i& dims, F&& f)
     for (int y = blo.y(); y <= bhi.y(); ++y)
       for (int x = blo.x(); x <= bhi.x(); ++x)
         f(Eigen::Vector3i(x, y, z));
+}
+
+/** Subcells of the cell at offset o (each coordinate -1, 0 or 1) from a mixed cell
+ * that touch the mixed cell's subcells: all of them for o = 0; on an axis where o is
+ * +1 (-1) only the subcells on the near side, coordinate 0 (1). */
+std::uint8_t
+touchingSubcells(const Eigen::Vector3i& o)
+{
+  // per axis: the bits whose coordinate on that axis is 0 and 1
+  constexpr std::uint8_t kLow[3] = {0x55, 0x33, 0x0F};
+  constexpr std::uint8_t kHigh[3] = {0xAA, 0xCC, 0xF0};
+  std::uint8_t bits = 0xFF;
+  for (int a = 0; a < 3; ++a)
+    if (o[a] > 0)
+      bits &= kLow[a];
+    else if (o[a] < 0)
+      bits &= kHigh[a];
+  return bits;
 }
 
 std::vector<std::uint64_t>
@@ -69,38 +88,46 @@ sortedBrickKeys(const VoxelBand& band,
 }
 
 Eigen::Vector3i
-brickDimsOf(const Eigen::Vector3i& subcell_dims)
+brickDimsOf(const Eigen::Vector3i& cell_dims)
 {
-  return (subcell_dims.array() + (FreeSpace::kBrickSide - 1)) / FreeSpace::kBrickSide;
+  return (cell_dims.array() + (FreeSpace::kBrickCells - 1)) / FreeSpace::kBrickCells;
 }
 
 } // namespace
 
 FreeSpace::FreeSpace(const VoxelBand& band, const BeforeAllocating& before_allocating)
 {
-  dims_ = 2 * band.grid().dims;
-  brick_dims_ = brickDimsOf(dims_);
-  brick_keys_ = sortedBrickKeys(band, dims_, brick_dims_);
+  const Eigen::Vector3i cell_dims = band.grid().dims;
+  dims_ = 2 * cell_dims;
+  brick_dims_ = brickDimsOf(cell_dims);
+  brick_keys_ = sortedBrickKeys(band, cell_dims, brick_dims_);
   if (before_allocating)
     before_allocating(bytesOfBricks(brick_keys_.size()));
-  rows_.assign(brick_keys_.size() * kBrickRows, 0);
+  cells_.assign(brick_keys_.size() * kBrickBytes, 0);
 
-  // A mixed cell frees its 2x2x2 subcells and every subcell touching them: the 4x4x4
-  // block [2c - 1, 2c + 2], clipped to the mask; at most 2 bricks a side.
+  std::uint8_t touching[27];
+  for (int i = 0; i < 27; ++i)
+    touching[i] =
+      touchingSubcells(Eigen::Vector3i(i % 3 - 1, i / 3 % 3 - 1, i / 9 - 1));
+  // A mixed cell frees its 2x2x2 subcells and every subcell touching them: subcells of
+  // its 26 neighbours, clipped to the grid; at most 2 bricks a side.
   for (const CellCoord& c : band.coords()) {
     Eigen::Vector3i lo, hi;
-    freeBlock(c, dims_, lo, hi);
-    forEachBrickOfBlock(c, dims_, [&](const Eigen::Vector3i& b) {
+    freeBlock(c, cell_dims, lo, hi);
+    forEachBrickOfBlock(c, cell_dims, [&](const Eigen::Vector3i& b) {
       const std::int64_t slot = findBrick(linearKey(b, brick_dims_));
-      std::uint16_t* rows = rows_.data() + slot * kBrickRows;
-      const Eigen::Vector3i origin = kBrickSide * b;
-      const Eigen::Vector3i blo = (lo - origin).cwiseMax(0);
-      const Eigen::Vector3i bhi = (hi - origin).cwiseMin(kBrickSide - 1);
-      const auto bits = static_cast<std::uint16_t>(((1u << (bhi.x() + 1)) - 1u) &
-                                                   ~((1u << blo.x()) - 1u));
+      std::uint8_t* bytes = cells_.data() + slot * kBrickBytes;
+      const Eigen::Vector3i origin = kBrickCells * b;
+      const Eigen::Vector3i blo = lo.cwiseMax(origin);
+      const Eigen::Vector3i bhi = hi.cwiseMin(origin + Eigen::Vector3i::Constant(7));
       for (int z = blo.z(); z <= bhi.z(); ++z)
         for (int y = blo.y(); y <= bhi.y(); ++y)
-          rows[y + kBrickSide * z] |= bits;
+          for (int x = blo.x(); x <= bhi.x(); ++x) {
+            const int o = (x - c.x() + 1) + 3 * (y - c.y() + 1) + 9 * (z - c.z() + 1);
+            bytes[(x - origin.x()) +
+                  kBrickCells * ((y - origin.y()) + kBrickCells * (z - origin.z()))] |=
+              touching[o];
+          }
     });
   }
 }
@@ -108,15 +135,14 @@ FreeSpace::FreeSpace(const VoxelBand& band, const BeforeAllocating& before_alloc
 std::uint64_t
 FreeSpace::estimateBytes(const VoxelBand& band)
 {
-  const Eigen::Vector3i dims = 2 * band.grid().dims;
+  const Eigen::Vector3i dims = band.grid().dims;
   return bytesOfBricks(sortedBrickKeys(band, dims, brickDimsOf(dims)).size());
 }
 
 std::uint64_t
 FreeSpace::memoryBytes() const
 {
-  return brick_keys_.capacity() * sizeof(std::uint64_t) +
-         rows_.capacity() * sizeof(std::uint16_t);
+  return brick_keys_.capacity() * sizeof(std::uint64_t) + cells_.capacity();
 }
 
 std::int64_t
@@ -128,13 +154,13 @@ FreeSpace::findBrick(std::uint64_t key) const
   return it - brick_keys_.begin();
 }
 
-const std::uint16_t*
-FreeSpace::brickRows(const Eigen::Vector3i& b) const
+const std::uint8_t*
+FreeSpace::brickCells(const Eigen::Vector3i& b) const
 {
   if (!((b.array() >= 0).all() && (b.array() < brick_dims_.array()).all()))
     return nullptr;
   const std::int64_t slot = findBrick(linearKey(b, brick_dims_));
-  return slot < 0 ? nullptr : rows_.data() + slot * kBrickRows;
+  return slot < 0 ? nullptr : cells_.data() + slot * kBrickBytes;
 }
 
 bool
@@ -142,12 +168,16 @@ FreeSpace::isFree(const Eigen::Vector3i& s) const
 {
   if (!((s.array() >= 0).all() && (s.array() < dims_.array()).all()))
     return false;
-  const std::uint16_t* rows =
-    brickRows(s.unaryExpr([](int v) { return v >> kBrickShift; }));
-  if (rows == nullptr)
+  const Eigen::Vector3i cell = s.unaryExpr([](int v) { return v >> 1; });
+  const std::uint8_t* bytes =
+    brickCells(cell.unaryExpr([](int v) { return v >> kBrickShift; }));
+  if (bytes == nullptr)
     return false;
-  const int m = kBrickSide - 1;
-  return (rows[(s.y() & m) + kBrickSide * (s.z() & m)] >> (s.x() & m)) & 1u;
+  const int m = kBrickCells - 1;
+  return (bytes[(cell.x() & m) +
+                kBrickCells * ((cell.y() & m) + kBrickCells * (cell.z() & m))] >>
+          subcellBit(s)) &
+         1u;
 }
 
 double

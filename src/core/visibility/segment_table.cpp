@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <stdexcept>
 
 namespace visfeat {
 namespace {
@@ -16,6 +18,39 @@ inFreeBlock(const Eigen::Vector3i& s)
   return (s.array() >= -2).all() && (s.array() <= 1).all();
 }
 
+/** Bit a of a subcell index: 1, 2, 4 for x, y, z. */
+constexpr unsigned
+axisBit(int a)
+{
+  return 1u << a;
+}
+
+/** fold f of byte b: bit i = OR of the bits j with j & ~f == i & ~f. */
+std::uint8_t
+foldOf(unsigned f, unsigned b)
+{
+  for (int a = 0; a < 3; ++a)
+    if (f & axisBit(a))
+      b |= b >> axisBit(a);
+  return static_cast<std::uint8_t>(b);
+}
+
+/** Cell (relative to the source cell) and bit of a subcell given relative to the
+ * source's centre, the lattice point 2c + 1: subcell 2c + 1 + s. */
+void
+cellOfSubcell(const Eigen::Vector3i& s, Eigen::Vector3i& cell, unsigned& bit)
+{
+  const Eigen::Vector3i absolute = s + Eigen::Vector3i::Ones(); // relative to 2c
+  cell = absolute.unaryExpr([](int v) { return v >> 1; });
+  bit = static_cast<unsigned>(FreeSpace::subcellBit(absolute));
+}
+
+std::int32_t
+pack(std::int32_t offset, unsigned mask)
+{
+  return static_cast<std::int32_t>(static_cast<std::uint32_t>(offset) << 8 | mask);
+}
+
 } // namespace
 
 SegmentTable::SegmentTable(int max_distance)
@@ -24,11 +59,10 @@ SegmentTable::SegmentTable(int max_distance)
   if (max_distance < 0)
     throw Error("segment table: negative distance");
   window_bricks_ = FreeSpaceWindow::bricksFor(max_distance);
-  const std::int32_t side = window_bricks_ * FreeSpace::kBrickSide;
-  const std::int32_t sy = side, sz = side * side;
-  auto linear = [&](const Eigen::Vector3i& s) {
-    return s.x() + sy * s.y() + sz * s.z();
-  };
+  for (unsigned f = 0; f < 8; ++f)
+    for (unsigned b = 0; b < 256; ++b)
+      folds_[f][b] = foldOf(f, b);
+
   const int w = 2 * max_distance + 1;
   row_start_.assign(static_cast<std::size_t>(w) * w, 0);
   std::int32_t stored = 0;
@@ -42,47 +76,76 @@ SegmentTable::SegmentTable(int max_distance)
     }
   spans_.assign(static_cast<std::size_t>(stored), Span{});
 
+  const std::int32_t side = window_bricks_ * FreeSpace::kBrickCells;
   for (int z = -max_distance; z <= max_distance; ++z)
     for (int y = -max_distance; y <= max_distance; ++y)
       for (int x = -max_distance; x <= max_distance; ++x) {
         const Eigen::Vector3i d(x, y, z);
-        if (d.cwiseAbs().sum() > max_distance)
-          continue;
-        const Eigen::Vector3i end = 2 * d;
-        std::vector<SegmentStretch> kept;
-        for (const SegmentStretch& s : decomposeLatticeSegment(end)) {
-          bool always_free = false;
-          for (int i = 0; i < s.count && !always_free; ++i) {
-            const Eigen::Vector3i& sub = s.subcells[static_cast<std::size_t>(i)];
-            always_free = inFreeBlock(sub) || inFreeBlock(sub - end);
-          }
-          if (!always_free)
-            kept.push_back(s);
-        }
-        std::stable_sort(kept.begin(), kept.end(),
-                         [](const SegmentStretch& a, const SegmentStretch& b) {
-                           return std::abs(a.t_mid - 0.5) < std::abs(b.t_mid - 0.5);
-                         });
-        Span& span = spans_[spanIndex(d)];
-        span.single_begin = static_cast<std::int32_t>(singles_.size());
-        span.multi_begin = static_cast<std::int32_t>(multis_.size());
-        for (const SegmentStretch& s : kept) {
-          const float length = static_cast<float>(0.5 * s.length); // cell edges
-          if (s.count == 1) {
-            singles_.push_back(linear(s.subcells[0]));
-            single_length_.push_back(length);
-          } else {
-            std::array<std::int32_t, 4> q;
-            for (int i = 0; i < 4; ++i) // pad a pair by repeating it
-              q[static_cast<std::size_t>(i)] =
-                linear(s.subcells[static_cast<std::size_t>(i % s.count)]);
-            multis_.push_back(q);
-            multi_length_.push_back(length);
-          }
-        }
-        span.single_end = static_cast<std::int32_t>(singles_.size());
-        span.multi_end = static_cast<std::int32_t>(multis_.size());
+        if (d.cwiseAbs().sum() <= max_distance)
+          addOffset(d, side);
       }
+}
+
+void
+SegmentTable::addOffset(const Eigen::Vector3i& d, std::int32_t side)
+{
+  unsigned fold = 0;
+  for (int a = 0; a < 3; ++a)
+    if (d[a] == 0)
+      fold |= axisBit(a);
+  const Eigen::Vector3i end = 2 * d;
+  std::vector<SegmentStretch> kept;
+  for (const SegmentStretch& s : decomposeLatticeSegment(end)) {
+    bool always_free = false;
+    for (int i = 0; i < s.count && !always_free; ++i) {
+      const Eigen::Vector3i& sub = s.subcells[static_cast<std::size_t>(i)];
+      always_free = inFreeBlock(sub) || inFreeBlock(sub - end);
+    }
+    if (!always_free)
+      kept.push_back(s);
+  }
+  std::stable_sort(kept.begin(), kept.end(),
+                   [](const SegmentStretch& a, const SegmentStretch& b) {
+                     return std::abs(a.t_mid - 0.5) < std::abs(b.t_mid - 0.5);
+                   });
+
+  Span& span = spans_[spanIndex(d)];
+  span.fold = static_cast<std::uint8_t>(fold);
+  span.stretch_begin = static_cast<std::int32_t>(stretches_.size());
+  std::vector<std::pair<std::int32_t, unsigned>> cells; // middle first
+  for (const SegmentStretch& s : kept) {
+    // The subcells around a stretch differ only on the axes where d is 0 (the segment
+    // lies on the faces between them), so they share one cell: the centres sit on odd
+    // lattice points, the middles of cells.
+    Eigen::Vector3i cell;
+    unsigned bit = 0, subcells = 0;
+    cellOfSubcell(s.subcells[0], cell, bit);
+    for (int i = 0; i < s.count; ++i) {
+      Eigen::Vector3i other;
+      unsigned other_bit = 0;
+      cellOfSubcell(s.subcells[static_cast<std::size_t>(i)], other, other_bit);
+      if (other != cell || ((other_bit ^ bit) & ~fold) != 0)
+        throw std::logic_error("segment table: a stretch spans two cells");
+      subcells |= 1u << other_bit;
+    }
+    if (s.count != 1 << __builtin_popcount(fold))
+      throw std::logic_error("segment table: stretch count does not match the offset");
+    const std::int32_t offset = cell.x() + side * (cell.y() + side * cell.z());
+    stretches_.push_back(pack(offset, subcells));
+    stretch_length_.push_back(static_cast<float>(0.5 * s.length)); // cell edges
+    const unsigned lowest = bit & ~fold;
+    auto it = std::find_if(cells.begin(), cells.end(),
+                           [&](const auto& c) { return c.first == offset; });
+    if (it == cells.end())
+      cells.emplace_back(offset, 1u << lowest);
+    else
+      it->second |= 1u << lowest;
+  }
+  span.stretch_end = static_cast<std::int32_t>(stretches_.size());
+  span.check_begin = static_cast<std::int32_t>(checks_.size());
+  for (const auto& [offset, mask] : cells)
+    checks_.push_back(pack(offset, mask));
+  span.check_end = static_cast<std::int32_t>(checks_.size());
 }
 
 bool
@@ -96,7 +159,7 @@ SegmentTable::sees(const FreeSpace& free_space,
     throw Error("segment table: offset beyond the table's distance");
   FreeSpaceWindow window(window_bricks_);
   window.load(free_space, BandTiles::brickOf(a));
-  return sees(window, window.linearIndex(FreeSpace::centre(a)), d, opacity);
+  return sees(window, window.cellIndex(a), d, opacity);
 }
 
 std::size_t
@@ -105,8 +168,16 @@ SegmentTable::checksFor(const Eigen::Vector3i& d) const
   if (d.cwiseAbs().sum() > max_distance_)
     throw Error("segment table: offset beyond the table's distance");
   const Span& span = spans_[spanIndex(d)];
-  return static_cast<std::size_t>(span.single_end - span.single_begin) +
-         static_cast<std::size_t>(span.multi_end - span.multi_begin);
+  return static_cast<std::size_t>(span.check_end - span.check_begin);
+}
+
+std::size_t
+SegmentTable::stretchesFor(const Eigen::Vector3i& d) const
+{
+  if (d.cwiseAbs().sum() > max_distance_)
+    throw Error("segment table: offset beyond the table's distance");
+  const Span& span = spans_[spanIndex(d)];
+  return static_cast<std::size_t>(span.stretch_end - span.stretch_begin);
 }
 
 } // namespace visfeat

@@ -28,8 +28,11 @@ isVisible(double blocked_length, double opacity)
  * Cell centres are subcell-grid vertices: the centre of cell c is the lattice point
  * 2c + 1 in subcell units, so the test is exact.
  *
- * Storage: bricks of kBrickSide^3 subcells (8^3 cells, 512 bytes, one 16-bit row per
- * (y, z)) allocated only where a mixed cell frees a subcell, kept sorted by brick key.
+ * Storage: bricks of kBrickCells^3 cells (kBrickSide^3 subcells), one byte a cell
+ * (bit sx + 2 sy + 4 sz for its subcell (sx, sy, sz), each 0 or 1), 512 bytes a
+ * brick, allocated only where a mixed cell frees a subcell, kept sorted by brick key.
+ * A byte a cell lets the segment test read all the subcells it needs in one cell with
+ * one load (SegmentTable).
  * Memory follows the band (a surface), not the grid: about 12 bytes per mixed cell
  * on the generated models (see visfeat_benchmark), and no per-grid table. A missing
  * brick is all occluded. The visibility map reads it through FreeSpaceWindow, a
@@ -38,10 +41,19 @@ isVisible(double blocked_length, double opacity)
 class FreeSpace
 {
 public:
-  /** \brief Subcells a brick side (8 cells). */
-  static constexpr int kBrickSide = 16;
-  /** \brief 16-bit rows a brick: one per (y, z), bit x. */
-  static constexpr int kBrickRows = kBrickSide * kBrickSide;
+  /** \brief Cells a brick side. */
+  static constexpr int kBrickCells = 8;
+  /** \brief Subcells a brick side. */
+  static constexpr int kBrickSide = 2 * kBrickCells;
+  /** \brief Bytes a brick: one per cell, index x + 8 y + 64 z (brick-local cells). */
+  static constexpr int kBrickBytes = kBrickCells * kBrickCells * kBrickCells;
+
+  /** \brief Bit of subcell s within its cell's byte: (s.x & 1) + 2 (s.y & 1) + 4 (s.z
+   * & 1). */
+  static int subcellBit(const Eigen::Vector3i& s)
+  {
+    return (s.x() & 1) | ((s.y() & 1) << 1) | ((s.z() & 1) << 2);
+  }
 
   /** \brief Called with the exact bytes the mask will hold, before they are
    * allocated; it may throw to refuse them (a memory check). */
@@ -68,10 +80,10 @@ public:
    * O(log bricks): for tests and single queries; the map uses FreeSpaceWindow. */
   bool isFree(const Eigen::Vector3i& s) const;
 
-  /** \brief The 16-bit rows (index y + 16 z, bit x, in brick-local subcells) of the
-   * brick at brick coordinates b, or nullptr when none is allocated (all occluded,
-   * also outside the grid). */
-  const std::uint16_t* brickRows(const Eigen::Vector3i& b) const;
+  /** \brief The kBrickBytes cell bytes (index x + 8 y + 64 z in brick-local cells,
+   * bits as subcellBit) of the brick at brick coordinates b (cell c lies in brick
+   * c / 8), or nullptr when none is allocated (all occluded, also outside the grid). */
+  const std::uint8_t* brickCells(const Eigen::Vector3i& b) const;
 
   /** \brief The lattice point (subcell units) at the centre of cell c. */
   static Eigen::Vector3i centre(const CellCoord& c)
@@ -103,7 +115,7 @@ private:
   Eigen::Vector3i dims_{0, 0, 0};
   Eigen::Vector3i brick_dims_{0, 0, 0};
   std::vector<std::uint64_t> brick_keys_; // sorted
-  std::vector<std::uint16_t> rows_;       // kBrickRows per brick, brick_keys_ order
+  std::vector<std::uint8_t> cells_;       // kBrickBytes per brick, brick_keys_ order
 };
 
 } // namespace visfeat

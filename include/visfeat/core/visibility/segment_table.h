@@ -12,16 +12,25 @@ namespace visfeat {
 /** \brief The segment test, precomputed once for every cell offset on the lattice.
  *
  * Whether cell c sees cell c + d depends on d and on the free-space bits along the
- * segment; the decomposition of the segment into stretches depends on d alone. The
- * table stores, for every offset d with |d|_1 <= max_distance (the offsets the
- * visibility rings can reach), the 32-bit offsets of the subcells of each stretch in a
- * FreeSpaceWindow of FreeSpaceWindow::bricksFor(max_distance) bricks a side, so a test
- * is a handful of bit loads from one small dense array, with no geometry.
+ * segment; the decomposition of the segment into stretches (decomposeLatticeSegment)
+ * depends on d alone. For every offset d with |d|_1 <= max_distance (the offsets the
+ * visibility rings can reach) the table stores the cells of a FreeSpaceWindow of
+ * windowBricks() bricks a side that the segment's stretches lie in, as offsets from
+ * the source cell's byte, with the subcell bits each cell must show free; a test is a
+ * handful of byte loads from one small dense array, with no geometry.
+ *
+ * Exact test (opacity 0): one check a cell, all the stretches in it at once. Where d
+ * has a zero coordinate the segment runs along subcell faces (one zero) or edges (two
+ * zeros), and a stretch is free when any of the 2 or 4 subcells around it is; such
+ * cells are read through a fold (a 256-entry table) that ORs those subcells onto the
+ * lowest one, so a check is always `(fold[byte] & mask) == mask`.
+ * With an opacity: one check a stretch, `byte & subcells` zero when blocked, with its
+ * length.
  *
  * Stretches that touch the 4x4x4 block of subcells around either end are left out:
  * those subcells belong to a mixed cell or touch one, so they are always free. The
- * remaining stretches are ordered from the middle of the segment outwards, where a
- * blocked segment is most often blocked.
+ * rest are ordered from the middle of the segment outwards, where a blocked segment
+ * is most often blocked.
  */
 class SegmentTable
 {
@@ -38,40 +47,30 @@ public:
   int windowBricks() const { return window_bricks_; }
 
   /** \brief Whether cell c sees cell c + d (|d|_1 <= maxDistance()), where
-   * base = window.linearIndex(FreeSpace::centre(c)) and the window (of windowBricks()
-   * bricks a side) was loaded around c's brick; same rule as FreeSpace::sees. */
+   * source = window.cellIndex(c) and the window (of windowBricks() bricks a side) was
+   * loaded around c's brick; same rule as FreeSpace::sees. */
   bool sees(const FreeSpaceWindow& window,
-            std::int32_t base,
+            std::int32_t source,
             const Eigen::Vector3i& d,
             double opacity) const
   {
     const Span& span = spans_[spanIndex(d)];
-    const std::uint16_t* rows = window.rows();
-    auto free_at = [rows](std::int32_t i) {
-      return (rows[static_cast<std::uint32_t>(i) >> 4] >> (i & 15)) & 1u;
-    };
+    const std::uint8_t* cells = window.cells() + source;
     if (opacity <= 0.0) {
-      for (std::int32_t s = span.single_begin; s < span.single_end; ++s)
-        if (!free_at(base + singles_[static_cast<std::size_t>(s)]))
-          return false;
-      for (std::int32_t m = span.multi_begin; m < span.multi_end; ++m) {
-        const auto& q = multis_[static_cast<std::size_t>(m)];
-        if (!(free_at(base + q[0]) | free_at(base + q[1]) | free_at(base + q[2]) |
-              free_at(base + q[3])))
+      const std::uint8_t* fold = folds_[span.fold].data();
+      for (std::int32_t i = span.check_begin; i < span.check_end; ++i) {
+        const std::int32_t v = checks_[static_cast<std::size_t>(i)];
+        const unsigned mask = static_cast<unsigned>(v) & 0xFFu;
+        if ((fold[cells[v >> 8]] & mask) != mask)
           return false;
       }
       return true;
     }
     double blocked = 0.0;
-    for (std::int32_t s = span.single_begin; s < span.single_end; ++s)
-      if (!free_at(base + singles_[static_cast<std::size_t>(s)]) &&
-          (blocked += single_length_[static_cast<std::size_t>(s)]) >= opacity)
-        return false;
-    for (std::int32_t m = span.multi_begin; m < span.multi_end; ++m) {
-      const auto& q = multis_[static_cast<std::size_t>(m)];
-      if (!(free_at(base + q[0]) | free_at(base + q[1]) | free_at(base + q[2]) |
-            free_at(base + q[3])) &&
-          (blocked += multi_length_[static_cast<std::size_t>(m)]) >= opacity)
+    for (std::int32_t i = span.stretch_begin; i < span.stretch_end; ++i) {
+      const std::int32_t v = stretches_[static_cast<std::size_t>(i)];
+      if ((cells[v >> 8] & static_cast<unsigned>(v) & 0xFFu) == 0 &&
+          (blocked += stretch_length_[static_cast<std::size_t>(i)]) >= opacity)
         return false;
     }
     return true;
@@ -84,15 +83,18 @@ public:
             const CellCoord& b,
             double opacity) const;
 
-  /** \brief Stretch checks stored for offset d (for tests and benchmarks). */
+  /** \brief Cell checks of the exact test for offset d (for tests and benchmarks). */
   std::size_t checksFor(const Eigen::Vector3i& d) const;
 
+  /** \brief Stretches checked for offset d with an opacity. */
+  std::size_t stretchesFor(const Eigen::Vector3i& d) const;
+
 private:
-  /** Stretches of one offset: singles [single_begin, multi_begin... see spans_. */
   struct Span
   {
-    std::int32_t single_begin = 0, single_end = 0;
-    std::int32_t multi_begin = 0, multi_end = 0;
+    std::int32_t check_begin = 0, check_end = 0;     // checks_
+    std::int32_t stretch_begin = 0, stretch_end = 0; // stretches_
+    std::uint8_t fold = 0; // folds_: bit a set when d's coordinate a is 0
   };
 
   /** Only the offsets with |d|_1 <= max_distance are stored (an octahedron, ~1/6 of
@@ -107,14 +109,20 @@ private:
     return static_cast<std::size_t>(row_start_[row] + (d.x() + half));
   }
 
+  void addOffset(const Eigen::Vector3i& d, std::int32_t side);
+
   int max_distance_ = 0;
   int window_bricks_ = 1;
   std::vector<std::int32_t> row_start_; // per (dy, dz), (2 max_distance + 1)^2
   std::vector<Span> spans_;
-  std::vector<std::int32_t> singles_;
-  std::vector<float> single_length_; // cell edges
-  std::vector<std::array<std::int32_t, 4>> multis_;
-  std::vector<float> multi_length_; // cell edges
+  /** (window offset << 8) | mask: the exact test's checks. */
+  std::vector<std::int32_t> checks_;
+  /** (window offset << 8) | subcells: the stretches, for an opacity. */
+  std::vector<std::int32_t> stretches_;
+  std::vector<float> stretch_length_; // cell edges
+  /** fold[f][byte]: bit i set when any subcell that differs from i only on the axes in
+   * f is free. */
+  std::array<std::array<std::uint8_t, 256>, 8> folds_{};
 };
 
 } // namespace visfeat

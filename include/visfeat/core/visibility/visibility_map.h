@@ -26,8 +26,9 @@ using ProgressCallback = std::function<void(std::size_t done, std::size_t total)
  * BFS ran out of cells counts as visible.
  *
  * Cells are independent, so the work is spread over threads brick by brick of 8^3
- * cells (BandTiles), each brick reading a dense FreeSpaceWindow of the sparse mask;
- * the result is the same for any thread count.
+ * cells (BandTiles), each brick reading a dense FreeSpaceWindow of the sparse mask and
+ * running its BFS on marks over the same window cells; the result is the same for any
+ * thread count.
  */
 class VisibilityMap
 {
@@ -69,9 +70,10 @@ public:
                                const Parameters& parameters,
                                const ProgressCallback& progress = {});
 
-  /** \brief Bytes compute() allocates for a band (radii, tiles, per-thread ring marks
-   * and windows), for memory checks before it runs. */
-  static std::uint64_t estimateBytes(const VoxelBand& band, int threads);
+  /** \brief Bytes compute() allocates for a band with these parameters (radii, tiles,
+   * and per thread a window with its BFS marks), for memory checks before it runs. */
+  static std::uint64_t estimateBytes(const VoxelBand& band,
+                                     const Parameters& parameters);
 
   /** \brief A map with the given radii instead of computed ones: for small hand-made
    * bands in tests, or radii computed elsewhere. radii[c] is the radius of band cell c

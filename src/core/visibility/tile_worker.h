@@ -1,0 +1,89 @@
+#pragma once
+
+#include <visfeat/core/band/voxel_band.h>
+#include <visfeat/core/visibility/band_tiles.h>
+#include <visfeat/core/visibility/free_space_window.h>
+#include <visfeat/core/visibility/segment_table.h>
+#include <visfeat/core/visibility/visibility_map.h>
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace visfeat {
+namespace detail {
+
+/** \brief One thread's work on the visibility map, a tile (BandTiles) at a time.
+ *
+ * For a tile it loads the free-space window around it and a local graph of the mixed
+ * cells inside the window (the BFS of a source in the tile never leaves it). The rings
+ * of up to 64 sources are grown together, one bit a source in a 64-bit word a cell
+ * (a bit-parallel BFS): the sources of a tile are close, so their rings overlap and
+ * one sweep over a cell serves them all. Each source then tests the cells of its ring
+ * k as in VisibilityMap, and drops out at its first hidden cell.
+ *
+ * Known radii: visibility and BFS distance are both symmetric, so a cell a with radius
+ * r_a sees every cell of its rings 1..r_a; a target at ring k <= r_a of a source is
+ * then visible from it without a test. Radii computed by any thread are used when they
+ * are there (relaxed atomic loads of the shared radii, kUnknownRadius otherwise); which
+ * ones are there changes the number of tests, never a radius.
+ */
+class TileWorker
+{
+public:
+  /** \brief Radius of a cell not computed yet (radii are at most kMaxRadius). */
+  static constexpr std::uint8_t kUnknownRadius = 0xFF;
+
+  /** \brief radii: one per band cell, kUnknownRadius until computed, shared by all
+   * workers (read and written with relaxed atomics). */
+  TileWorker(const VoxelBand& band,
+             const FreeSpace& free_space,
+             const BandTiles& tiles,
+             const SegmentTable& table,
+             const VisibilityMap::Parameters& parameters,
+             std::uint8_t* radii);
+
+  /** \brief Radii of the cells of tile t, into the shared radii. */
+  void run(std::size_t t);
+
+  /** \brief Pair tests performed so far. */
+  std::uint64_t tests() const { return tests_; }
+
+  /** \brief Bytes a worker holds for a window of this many bricks a side, with at most
+   * `cells` mixed cells in it. */
+  static std::uint64_t estimateBytes(int window_bricks, std::uint64_t cells);
+
+private:
+  struct Coord
+  {
+    std::int16_t x, y, z;
+  };
+
+  void load(std::size_t t);
+  void unload();
+  /** Radii of sources [first, first + count) of the loaded tile (count <= 64). */
+  void runBatch(const CellId* first, int count);
+
+  const VoxelBand& band_;
+  const FreeSpace& free_space_;
+  const BandTiles& tiles_;
+  const SegmentTable& table_;
+  const VisibilityMap::Parameters& parameters_;
+  std::uint8_t* radii_;
+  FreeSpaceWindow window_;
+  std::array<std::int32_t, 6> steps_{};
+
+  // the local graph: window byte -> local id (-1: not mixed), and per local id
+  std::vector<std::int32_t> local_of_;
+  std::vector<std::int32_t> window_index_;
+  std::vector<Coord> coord_;                          // window-local cells
+  std::vector<std::array<std::int32_t, 6>> adjacent_; // local ids, -1 none
+  std::vector<std::uint8_t> known_;
+  // bit-parallel BFS state, one bit a source of the batch
+  std::vector<std::uint64_t> visited_, ring_bits_, next_bits_;
+  std::vector<std::int32_t> ring_, next_;
+  std::uint64_t tests_ = 0;
+};
+
+} // namespace detail
+} // namespace visfeat
