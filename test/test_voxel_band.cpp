@@ -2,7 +2,10 @@
 // (gridForCloud + buildVoxelBand).
 
 #include "band_fixtures.h"
+#include <support/cad_catalogue.h>
+#include <support/cad_sampling.h>
 #include <support/portable_random.h>
+#include <support/synthetic_shapes.h>
 
 #include <visfeat/core/band/voxel_band.h>
 #include <visfeat/core/common/error.h>
@@ -564,6 +567,46 @@ TEST(BandFromCloud, ShuffledPointsGiveTheSameBand)
     for (std::size_t j = 0; j < perm.size(); ++j)
       ASSERT_EQ(b.pointCell()[j], a.pointCell()[perm[j]]);
   }
+}
+
+// Large clouds are split into slabs of bricks, one pcl::octree each, built on several
+// threads: the band (cells, ids, counts, adjacency, repair, point cells) is the same
+// for any thread count. 360,000 points make 3 slabs of more than 100,000.
+TEST(BandFromCloud, SlabOctreesOnThreadsGiveTheSameBand)
+{
+  const visfeat::synthetic::CadModel model =
+    visfeat::synthetic::rotated(visfeat::synthetic::cadModelByName("box_with_hole"),
+                                visfeat::synthetic::randomRotation(5));
+  visfeat::synthetic::SamplingOptions sampling;
+  sampling.count = 360000;
+  sampling.seed = 5;
+  const std::vector<Eigen::Vector3f> samples =
+    visfeat::synthetic::sampleCadModel(model, sampling).points;
+  pcl::PointCloud<pcl::PointXYZ> cloud;
+  for (const Eigen::Vector3f& p : samples)
+    cloud.push_back(pcl::PointXYZ(p.x(), p.y(), p.z()));
+  cloud[7].x = std::numeric_limits<float>::quiet_NaN(); // skipped on every thread count
+  cloud.is_dense = false;
+  const GridSpec grid = visfeat::gridForCloud(cloud, 200);
+  VoxelBand::Options one;
+  one.threads = 1;
+  const VoxelBand a = visfeat::buildVoxelBand(cloud, grid, one);
+  EXPECT_GT(a.repairCellCount(), 0u);
+  for (int threads : {2, 3, 5}) {
+    VoxelBand::Options many;
+    many.threads = threads;
+    const VoxelBand b = visfeat::buildVoxelBand(cloud, grid, many);
+    ASSERT_EQ(a.size(), b.size()) << threads << " threads";
+    EXPECT_EQ(a.repairCellCount(), b.repairCellCount());
+    for (std::size_t i = 0; i < a.size(); ++i) {
+      const auto id = static_cast<CellId>(i);
+      ASSERT_EQ(a.coord(id), b.coord(id)) << threads << " threads, cell " << i;
+      ASSERT_EQ(a.pointCount(id), b.pointCount(id));
+      ASSERT_EQ(a.neighbours(id), b.neighbours(id));
+    }
+    EXPECT_EQ(a.pointCell(), b.pointCell());
+  }
+  EXPECT_EQ(a.pointCell()[7], visfeat::kNoCell);
 }
 
 TEST(BandFromCloud, RepairMakesSparseCloudBandsFaceConnected)

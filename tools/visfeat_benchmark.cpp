@@ -92,8 +92,9 @@ printHelp(const char* program)
   print_info("    -csv                = comma-separated output (notes go to "
              "stderr)\n");
   print_info(
-    "  Columns: seconds per phase (grid, band, free space, visibility, output), total "
-    "= wall\n"
+    "  Columns: seconds per phase (grid = shape checks, resolution and grid; band; "
+    "free\n"
+    "  space; visibility; seg = segmentation and graph; output), total = wall\n"
     "  time of compute(); Mcell/s = mixed cells / visibility seconds; tests = pair "
     "tests\n"
     "  (millions); peak_MiB = peak resident memory during the run (see the note "
@@ -193,16 +194,17 @@ public:
     if (csv_) {
       std::printf(
         "shape,resolution,method,points,mixed_cells,repair_cells,grid_s,band_s,"
-        "free_space_s,visibility_s,output_s,phase_sum_s,total_s,mixed_cells_per_s,"
+        "free_space_s,visibility_s,segmentation_s,output_s,phase_sum_s,total_s,mixed_"
+        "cells_per_s,"
         "pair_tests,peak_rss_mib,structures_mib,structure_bytes_per_mixed_cell,"
         "peak_bytes_per_mixed_cell,ratio_visfeat_over_normals,error\n");
       return;
     }
     std::printf(
-      "%-16s %5s %-8s %9s %9s %7s %7s %7s %7s %7s %7s %8s %8s %9s %8s %8s %6s %6s "
-      "%6s\n",
+      "%-16s %5s %-8s %9s %9s %7s %7s %7s %7s %7s %7s %7s %8s %8s %9s %8s %8s %6s "
+      "%6s %6s\n",
       "shape", "res", "method", "points", "mixed", "repair", "grid_s", "band_s",
-      "free_s", "vis_s", "out_s", "total_s", "Mcell/s", "tests(M)", "peak_MiB",
+      "free_s", "vis_s", "seg_s", "out_s", "total_s", "Mcell/s", "tests(M)", "peak_MiB",
       "data_MiB", "B/cell", "pk_B/c", "ratio");
   }
 
@@ -212,16 +214,16 @@ public:
     if (csv_) {
       if (r.visfeat)
         std::printf(
-          "%s,%d,%s,%zu,%zu,%zu,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.1f,%llu,%.1f,%.2f,"
-          "%.1f,%.1f,,%s\n",
+          "%s,%d,%s,%zu,%zu,%zu,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.1f,%llu,%.1f,"
+          "%.2f,%.1f,%.1f,,%s\n",
           r.shape.c_str(), r.resolution, r.method.c_str(), r.points, r.mixed, r.repair,
-          p.grid_ms / 1e3, p.band_ms / 1e3, p.free_space_ms / 1e3,
-          p.visibility_ms / 1e3, p.output_ms / 1e3, p.total() / 1e3, r.total_s,
+          prepSeconds(p), p.band_ms / 1e3, p.free_space_ms / 1e3, p.visibility_ms / 1e3,
+          segmentationSeconds(p), p.output_ms / 1e3, p.total() / 1e3, r.total_s,
           r.cells_per_s, static_cast<unsigned long long>(r.tests), r.peak_mib,
           r.data_mib, bytesPerCell(r.data_mib, r.mixed),
           bytesPerCell(r.peak_mib, r.mixed), csvText(r.error).c_str());
       else
-        std::printf("%s,%d,%s,%zu,,,,,,,,,%.6f,,,%.1f,,,,%s,%s\n", r.shape.c_str(),
+        std::printf("%s,%d,%s,%zu,,,,,,,,,,%.6f,,,%.1f,,,,%s,%s\n", r.shape.c_str(),
                     r.resolution, r.method.c_str(), r.points, r.total_s, r.peak_mib,
                     r.ratio > 0 ? std::to_string(r.ratio).c_str() : "",
                     csvText(r.error).c_str());
@@ -233,11 +235,11 @@ public:
                   r.method.c_str(), r.points, r.error.c_str());
     else if (r.visfeat)
       std::printf(
-        "%-16s %5d %-8s %9zu %9zu %7zu %7.3f %7.3f %7.3f %7.3f %7.3f %8.3f %8.3f "
-        "%9.1f %8.1f %8.1f %6.0f %6.0f %6s\n",
+        "%-16s %5d %-8s %9zu %9zu %7zu %7.3f %7.3f %7.3f %7.3f %7.3f %7.3f %8.3f "
+        "%8.3f %9.1f %8.1f %8.1f %6.0f %6.0f %6s\n",
         r.shape.c_str(), r.resolution, r.method.c_str(), r.points, r.mixed, r.repair,
-        p.grid_ms / 1e3, p.band_ms / 1e3, p.free_space_ms / 1e3, p.visibility_ms / 1e3,
-        p.output_ms / 1e3, r.total_s, r.cells_per_s / 1e6,
+        prepSeconds(p), p.band_ms / 1e3, p.free_space_ms / 1e3, p.visibility_ms / 1e3,
+        segmentationSeconds(p), p.output_ms / 1e3, r.total_s, r.cells_per_s / 1e6,
         static_cast<double>(r.tests) / 1e6, r.peak_mib, r.data_mib,
         bytesPerCell(r.data_mib, r.mixed), bytesPerCell(r.peak_mib, r.mixed), "-");
     else {
@@ -245,15 +247,27 @@ public:
       if (r.ratio > 0)
         std::snprintf(ratio, sizeof(ratio), "%.2f", r.ratio);
       std::printf(
-        "%-16s %5d %-8s %9zu %9s %7s %7s %7s %7s %7s %7s %8.3f %8s %9s %8.1f %8s %6s "
-        "%6s %6s\n",
+        "%-16s %5d %-8s %9zu %9s %7s %7s %7s %7s %7s %7s %7s %8.3f %8s %9s %8.1f %8s "
+        "%6s %6s %6s\n",
         r.shape.c_str(), r.resolution, r.method.c_str(), r.points, "-", "-", "-", "-",
-        "-", "-", "-", r.total_s, "-", "-", r.peak_mib, "-", "-", "-", ratio);
+        "-", "-", "-", "-", r.total_s, "-", "-", r.peak_mib, "-", "-", "-", ratio);
     }
     std::fflush(stdout);
   }
 
 private:
+  /** Shape checks, automatic resolution, grid and (noise mode) smoothing. */
+  static double prepSeconds(const visfeat::PhaseTimes& p)
+  {
+    return (p.shape_ms + p.grid_ms + p.smoothing_ms) / 1e3;
+  }
+
+  /** Components, regions, classes and the topology graph. */
+  static double segmentationSeconds(const visfeat::PhaseTimes& p)
+  {
+    return (p.segmentation_ms + p.graph_ms) / 1e3;
+  }
+
   static double bytesPerCell(double mib, std::size_t cells)
   {
     return cells > 0 ? mib * 1024.0 * 1024.0 / static_cast<double>(cells) : 0.0;

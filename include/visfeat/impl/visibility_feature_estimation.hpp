@@ -14,6 +14,7 @@
 #include <pcl/common/point_tests.h>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -189,9 +190,8 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::checkBandMemory(
   const VoxelBand& band, std::uint64_t mask_bytes, const Run& run) const
 {
   // Counted from the band itself: the sparse mask's bricks, the map's working set.
-  const std::uint64_t estimate =
-    band.memoryBytes() + mask_bytes +
-    VisibilityMap::estimateBytes(band, run.visibility);
+  const std::uint64_t estimate = band.memoryBytes() + mask_bytes +
+                                 VisibilityMap::estimateBytes(band, run.visibility);
   checkMemory(estimate, memory_limit_,
               "the free space and visibility map of " + std::to_string(band.size()) +
                 " mixed cells");
@@ -227,30 +227,39 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::labelPoints(
                                run.segmentation.point_feature_distance);
   const float nan = std::numeric_limits<float>::quiet_NaN();
   const GridSpec& grid = results.band.grid();
-  bool dense = true;
-  for (std::size_t i = 0; i < indices_->size(); ++i) {
-    const auto index = static_cast<std::size_t>((*indices_)[i]);
-    const PointInT& p = (*input_)[index];
-    // The point as the band saw it (smoothed in noise mode) and its cell: the band's
-    // own record for points of the band's cloud, else the cell it falls in.
-    const PointInT& seen = fake_surface_ ? surface[index] : p;
-    CellId cell = kNoCell;
-    if (pcl::isXYZFinite(p))
-      cell = fake_surface_
-               ? results.band.pointCell()[index]
-               : results.band.find(grid.cellOf(Eigen::Vector3d(p.x, p.y, p.z)));
-    PointOutT& out = output[i];
-    out.x = p.x;
-    out.y = p.y;
-    out.z = p.z;
-    out.visibility_radius =
-      cell == kNoCell ? nan : static_cast<float>(results.map.radius(cell));
-    const PointLabel label =
-      labeling.labelOf(grid.toCellUnits(Eigen::Vector3d(seen.x, seen.y, seen.z)), cell);
-    out.label = label.label;
-    out.feature_class = static_cast<std::uint8_t>(label.feature_class);
-    dense = dense && cell != kNoCell;
-  }
+  std::atomic<bool> dense{true};
+  // Points are independent: chunks of them on the map's threads.
+  constexpr std::size_t kPointsPerChunk = 4096;
+  parallelFor(
+    indices_->size(), run.visibility.threads, kPointsPerChunk,
+    [&](std::size_t begin, std::size_t end) {
+      bool chunk_dense = true;
+      for (std::size_t i = begin; i < end; ++i) {
+        const auto index = static_cast<std::size_t>((*indices_)[i]);
+        const PointInT& p = (*input_)[index];
+        // The point as the band saw it (smoothed in noise mode) and its cell: the
+        // band's own record for points of the band's cloud, else the cell it falls in.
+        const PointInT& seen = fake_surface_ ? surface[index] : p;
+        CellId cell = kNoCell;
+        if (pcl::isXYZFinite(p))
+          cell = fake_surface_
+                   ? results.band.pointCell()[index]
+                   : results.band.find(grid.cellOf(Eigen::Vector3d(p.x, p.y, p.z)));
+        PointOutT& out = output[i];
+        out.x = p.x;
+        out.y = p.y;
+        out.z = p.z;
+        out.visibility_radius =
+          cell == kNoCell ? nan : static_cast<float>(results.map.radius(cell));
+        const PointLabel label = labeling.labelOf(
+          grid.toCellUnits(Eigen::Vector3d(seen.x, seen.y, seen.z)), cell);
+        out.label = label.label;
+        out.feature_class = static_cast<std::uint8_t>(label.feature_class);
+        chunk_dense = chunk_dense && cell != kNoCell;
+      }
+      if (!chunk_dense)
+        dense = false;
+    });
   output.is_dense = dense;
 }
 
@@ -283,7 +292,9 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::computeResults(
   const typename PointCloudIn::ConstPtr surface = smoothedSurface(run);
 
   auto start = Clock::now();
-  results.band = buildVoxelBand(*surface, run.grid, band_options_);
+  VoxelBand::Options band_options = band_options_;
+  band_options.threads = run.visibility.threads;
+  results.band = buildVoxelBand(*surface, run.grid, band_options);
   run.times.band_ms = detail::millisecondsSince(start);
 
   start = Clock::now();

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <visfeat/core/common/error.h>
+#include <visfeat/core/common/threads.h>
 #include <visfeat/voxel_band_from_cloud.h>
 
 #include <pcl/common/point_tests.h>
@@ -32,6 +33,12 @@ defineOctreeBox(Octree& octree, const GridSpec& grid)
   octree.getBoundingBox(min.x(), min.y(), min.z(), max.x(), max.y(), max.z());
   return min;
 }
+
+/** Fewer points than this per octree are not worth a thread (measured on the 2-core
+ * test machine: octree insertion costs 20-30 ms per 100,000 points, a thread's start
+ * well under 1 ms; the generated icosahedron at 256, 656,000 points, builds its band
+ * in 0.44 s on 2 threads instead of 0.52 s). */
+constexpr std::size_t kMinPointsPerOctree = 100000;
 
 } // namespace detail
 
@@ -70,16 +77,20 @@ buildVoxelBand(const pcl::PointCloud<PointT>& cloud,
                const GridSpec& grid,
                const VoxelBand::Options& options)
 {
-  pcl::octree::OctreePointCloudPointVector<PointT> octree(grid.cell_size);
-  if (detail::defineOctreeBox(octree, grid) != grid.origin)
-    throw Error(
-      "the octree moved the grid's origin: use gridForCloud() to make the grid");
-  // Non-owning pointer: the octree reads the cloud only during this call.
+  {
+    pcl::octree::OctreePointCloudPointVector<PointT> probe(grid.cell_size);
+    if (detail::defineOctreeBox(probe, grid) != grid.origin)
+      throw Error(
+        "the octree moved the grid's origin: use gridForCloud() to make the grid");
+  }
+  // Non-owning pointer: the octrees read the cloud only during this call.
   const typename pcl::PointCloud<PointT>::ConstPtr input(
     &cloud, [](const pcl::PointCloud<PointT>*) {});
-  // Finite points only (pcl::isFinite may also look at other fields), handed to the
-  // octree brick by brick (8^3 cells, counting sort): descents then stay in cache. The
-  // order changes no result: cells are renumbered and point sums are integers.
+  // Finite points only (pcl::isFinite may also look at other fields), sorted brick by
+  // brick (8^3 cells, counting sort, z-major): descents then stay in cache, and the
+  // points split into slabs of whole bricks, one octree each, built in parallel (no
+  // cell spans two slabs). The order changes no result: cells are renumbered by key
+  // and point sums are integers.
   constexpr int kBrickShift = 3;
   const Eigen::Vector3i bricks = (grid.dims.array() + 7) / 8;
   auto brickOf = [&](const PointT& p) {
@@ -97,38 +108,72 @@ buildVoxelBand(const pcl::PointCloud<PointT>& cloud,
       ++start[brickOf(p) + 1];
   for (std::size_t b = 1; b < start.size(); ++b)
     start[b] += start[b - 1];
-  const auto finite = std::make_shared<pcl::Indices>(start.back());
+  const std::vector<std::uint32_t> brick_start = start;
+  pcl::Indices finite(start.back());
   for (std::size_t i = 0; i < cloud.size(); ++i)
     if (pcl::isXYZFinite(cloud[i]))
-      (*finite)[start[brickOf(cloud[i])]++] = static_cast<pcl::index_t>(i);
-  octree.setInputCloud(input, finite);
-  octree.addPointsFromInputCloud();
+      finite[start[brickOf(cloud[i])]++] = static_cast<pcl::index_t>(i);
 
-  std::vector<OccupiedCell> occupied;
-  occupied.reserve(octree.getLeafCount());
+  // Slabs of about equal point counts, cut between bricks.
+  const int threads = resolveThreads(options.threads);
+  const std::size_t slabs = std::max<std::size_t>(
+    1, std::min<std::size_t>(static_cast<std::size_t>(threads),
+                             finite.size() / detail::kMinPointsPerOctree));
+  std::vector<std::size_t> cut(slabs + 1, finite.size());
+  cut[0] = 0;
+  for (std::size_t s = 1; s < slabs; ++s) {
+    const auto target = static_cast<std::uint32_t>(finite.size() * s / slabs);
+    cut[s] = *std::lower_bound(brick_start.begin(), brick_start.end(), target);
+  }
+
+  std::vector<std::vector<OccupiedCell>> slab_cells(slabs);
   std::vector<std::int32_t> point_occupied(cloud.size(), -1);
   const double scale = OccupiedCell::kOffsetScale / grid.cell_size;
-  for (auto it = octree.leaf_depth_begin(); it != octree.leaf_depth_end(); ++it) {
-    // The octree computes its keys as GridSpec::cellOf does (same origin and cell
-    // size, truncation of (p - origin) / cell_size in double): a key is the cell of
-    // its points.
-    const pcl::octree::OctreeKey& key = it.getCurrentOctreeKey();
-    OccupiedCell cell;
-    cell.coord = CellCoord(static_cast<int>(key.x), static_cast<int>(key.y),
-                           static_cast<int>(key.z));
-    const Eigen::Vector3d cell_min =
-      grid.origin + grid.cell_size * cell.coord.template cast<double>();
-    const auto entry = static_cast<std::int32_t>(occupied.size());
-    for (const auto index : it.getLeafContainer().getPointIndicesVector()) {
-      const PointT& p = cloud[static_cast<std::size_t>(index)];
-      // offsets are >= 0: adding 0.5 and truncating rounds them
-      const Eigen::Vector3d offset =
-        (Eigen::Vector3d(p.x, p.y, p.z) - cell_min) * scale;
-      cell.offset_sum += (offset.array() + 0.5).template cast<std::int64_t>().matrix();
-      ++cell.point_count;
-      point_occupied[static_cast<std::size_t>(index)] = entry;
+  parallelFor(slabs, threads, 1, [&](std::size_t first, std::size_t last) {
+    for (std::size_t s = first; s < last; ++s) {
+      pcl::octree::OctreePointCloudPointVector<PointT> octree(grid.cell_size);
+      detail::defineOctreeBox(octree, grid);
+      const auto indices = std::make_shared<pcl::Indices>(
+        finite.begin() + static_cast<std::ptrdiff_t>(cut[s]),
+        finite.begin() + static_cast<std::ptrdiff_t>(cut[s + 1]));
+      octree.setInputCloud(input, indices);
+      octree.addPointsFromInputCloud();
+      std::vector<OccupiedCell>& occupied = slab_cells[s];
+      occupied.reserve(octree.getLeafCount());
+      for (auto it = octree.leaf_depth_begin(); it != octree.leaf_depth_end(); ++it) {
+        // The octree computes its keys as GridSpec::cellOf does (same origin and cell
+        // size, truncation of (p - origin) / cell_size in double): a key is the cell
+        // of its points.
+        const pcl::octree::OctreeKey& key = it.getCurrentOctreeKey();
+        OccupiedCell cell;
+        cell.coord = CellCoord(static_cast<int>(key.x), static_cast<int>(key.y),
+                               static_cast<int>(key.z));
+        const Eigen::Vector3d cell_min =
+          grid.origin + grid.cell_size * cell.coord.template cast<double>();
+        const auto entry = static_cast<std::int32_t>(occupied.size());
+        for (const auto index : it.getLeafContainer().getPointIndicesVector()) {
+          const PointT& p = cloud[static_cast<std::size_t>(index)];
+          // offsets are >= 0: adding 0.5 and truncating rounds them
+          const Eigen::Vector3d offset =
+            (Eigen::Vector3d(p.x, p.y, p.z) - cell_min) * scale;
+          cell.offset_sum +=
+            (offset.array() + 0.5).template cast<std::int64_t>().matrix();
+          ++cell.point_count;
+          point_occupied[static_cast<std::size_t>(index)] = entry; // slab-local
+        }
+        occupied.push_back(cell);
+      }
     }
-    occupied.push_back(cell);
+  });
+  // One list of occupied cells; slab-local entries become global.
+  std::vector<OccupiedCell> occupied;
+  for (std::size_t s = 0; s < slabs; ++s) {
+    const auto offset = static_cast<std::int32_t>(occupied.size());
+    if (offset > 0)
+      for (std::size_t i = cut[s]; i < cut[s + 1]; ++i)
+        point_occupied[static_cast<std::size_t>(finite[i])] += offset;
+    occupied.insert(occupied.end(), slab_cells[s].begin(), slab_cells[s].end());
+    slab_cells[s] = {};
   }
   if (occupied.empty())
     throw Error("the cloud has no finite point");

@@ -1,5 +1,6 @@
 #include <visfeat/core/band/voxel_band.h>
 #include <visfeat/core/common/error.h>
+#include <visfeat/core/common/threads.h>
 
 #include <algorithm>
 #include <cstdlib>
@@ -12,6 +13,25 @@ namespace {
 const std::array<CellCoord, 6> kFaceSteps = {CellCoord(-1, 0, 0), CellCoord(1, 0, 0),
                                              CellCoord(0, -1, 0), CellCoord(0, 1, 0),
                                              CellCoord(0, 0, -1), CellCoord(0, 0, 1)};
+
+/** Chunks of the parallel loops (small enough to balance, large enough to be cheap). */
+constexpr std::size_t kPointsPerChunk = 16384;
+constexpr std::size_t kCellsPerChunk = 8192;
+
+/** Indices 0..n-1 ordered by the linear key of coord(i) (keys computed once). */
+template <typename Coord>
+std::vector<std::size_t>
+sortedByKey(const GridSpec& grid, std::size_t n, Coord&& coord)
+{
+  std::vector<std::pair<std::uint64_t, std::size_t>> keyed(n);
+  for (std::size_t i = 0; i < n; ++i)
+    keyed[i] = {grid.linearKey(coord(i)), i};
+  std::sort(keyed.begin(), keyed.end());
+  std::vector<std::size_t> order(n);
+  for (std::size_t i = 0; i < n; ++i)
+    order[i] = keyed[i].second;
+  return order;
+}
 
 /** The 26-neighbour offsets that are not face steps: 12 edge and 8 corner steps. */
 std::vector<CellCoord>
@@ -173,11 +193,8 @@ VoxelBand::build(const GridSpec& grid,
     }
 
   // Number the occupied cells by linear key; remember where each input entry went.
-  std::vector<std::size_t> order(occupied.size());
-  std::iota(order.begin(), order.end(), std::size_t{0});
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-    return grid.linearKey(occupied[a].coord) < grid.linearKey(occupied[b].coord);
-  });
+  const std::vector<std::size_t> order = sortedByKey(
+    grid, occupied.size(), [&](std::size_t i) { return occupied[i].coord; });
   std::vector<CellCoord> coords;
   std::vector<std::uint32_t> counts;
   std::vector<Eigen::Vector3d> sums; // sum of point positions, cell units
@@ -196,17 +213,21 @@ VoxelBand::build(const GridSpec& grid,
   band.grid_ = grid;
   if (options.repair)
     band.repair_cells_ = BandRepair(grid, coords, counts, sums).run();
-  band.finalize(std::move(coords), std::move(counts));
+  band.finalize(std::move(coords), std::move(counts), options.threads);
 
-  band.point_cell_.assign(point_occupied.size(), kNoCell);
-  for (std::size_t p = 0; p < point_occupied.size(); ++p) {
-    const std::int32_t entry = point_occupied[p];
-    if (entry < 0)
-      continue;
-    if (static_cast<std::size_t>(entry) >= occupied.size())
+  for (const std::int32_t entry : point_occupied)
+    if (entry >= 0 && static_cast<std::size_t>(entry) >= occupied.size())
       throw Error("a point refers to an occupied cell that does not exist");
-    band.point_cell_[p] = band.find(occupied[static_cast<std::size_t>(entry)].coord);
-  }
+  band.point_cell_.assign(point_occupied.size(), kNoCell);
+  parallelFor(point_occupied.size(), options.threads, kPointsPerChunk,
+              [&](std::size_t begin, std::size_t end) {
+                for (std::size_t p = begin; p < end; ++p) {
+                  const std::int32_t entry = point_occupied[p];
+                  if (entry >= 0)
+                    band.point_cell_[p] =
+                      band.find(occupied[static_cast<std::size_t>(entry)].coord);
+                }
+              });
   return band;
 }
 
@@ -228,13 +249,12 @@ VoxelBand::fromCells(const GridSpec& grid,
 }
 
 void
-VoxelBand::finalize(std::vector<CellCoord> coords, std::vector<std::uint32_t> counts)
+VoxelBand::finalize(std::vector<CellCoord> coords,
+                    std::vector<std::uint32_t> counts,
+                    int threads)
 {
-  std::vector<std::size_t> order(coords.size());
-  std::iota(order.begin(), order.end(), std::size_t{0});
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-    return grid_.linearKey(coords[a]) < grid_.linearKey(coords[b]);
-  });
+  const std::vector<std::size_t> order =
+    sortedByKey(grid_, coords.size(), [&](std::size_t i) { return coords[i]; });
   coords_.resize(coords.size());
   point_counts_.resize(coords.size());
   index_ = CellIndex(grid_.dims);
@@ -244,9 +264,12 @@ VoxelBand::finalize(std::vector<CellCoord> coords, std::vector<std::uint32_t> co
     index_.insert(coords_[r], static_cast<CellId>(r));
   }
   neighbours_.resize(coords_.size());
-  for (std::size_t i = 0; i < coords_.size(); ++i)
-    for (std::size_t s = 0; s < kFaceSteps.size(); ++s)
-      neighbours_[i][s] = index_.find(coords_[i] + kFaceSteps[s]);
+  parallelFor(coords_.size(), threads, kCellsPerChunk,
+              [&](std::size_t begin, std::size_t end) {
+                for (std::size_t i = begin; i < end; ++i)
+                  for (std::size_t s = 0; s < kFaceSteps.size(); ++s)
+                    neighbours_[i][s] = index_.find(coords_[i] + kFaceSteps[s]);
+              });
 }
 
 std::uint64_t

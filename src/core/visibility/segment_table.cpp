@@ -74,7 +74,8 @@ SegmentTable::SegmentTable(int max_distance)
       if (half >= 0)
         stored += 2 * half + 1;
     }
-  spans_.assign(static_cast<std::size_t>(stored), Span{});
+  check_spans_.assign(static_cast<std::size_t>(stored), CheckSpan{});
+  stretch_spans_.assign(static_cast<std::size_t>(stored), StretchSpan{});
 
   const std::int32_t side = window_bricks_ * FreeSpace::kBrickCells;
   for (int z = -max_distance; z <= max_distance; ++z)
@@ -109,9 +110,8 @@ SegmentTable::addOffset(const Eigen::Vector3i& d, std::int32_t side)
                      return std::abs(a.t_mid - 0.5) < std::abs(b.t_mid - 0.5);
                    });
 
-  Span& span = spans_[spanIndex(d)];
-  span.fold = static_cast<std::uint8_t>(fold);
-  span.stretch_begin = static_cast<std::int32_t>(stretches_.size());
+  StretchSpan& stretch_span = stretch_spans_[spanIndex(d)];
+  stretch_span.begin = static_cast<std::int32_t>(stretches_.size());
   std::vector<std::pair<std::int32_t, unsigned>> cells; // middle first
   for (const SegmentStretch& s : kept) {
     // The subcells around a stretch differ only on the axes where d is 0 (the segment
@@ -141,11 +141,13 @@ SegmentTable::addOffset(const Eigen::Vector3i& d, std::int32_t side)
     else
       it->second |= 1u << lowest;
   }
-  span.stretch_end = static_cast<std::int32_t>(stretches_.size());
-  span.check_begin = static_cast<std::int32_t>(checks_.size());
+  stretch_span.end = static_cast<std::int32_t>(stretches_.size());
+  CheckSpan& check_span = check_spans_[spanIndex(d)];
+  check_span.fold = static_cast<std::uint8_t>(fold);
+  check_span.begin = static_cast<std::int32_t>(checks_.size());
+  check_span.count = static_cast<std::uint16_t>(cells.size());
   for (const auto& [offset, mask] : cells)
     checks_.push_back(pack(offset, mask));
-  span.check_end = static_cast<std::int32_t>(checks_.size());
 }
 
 bool
@@ -167,8 +169,7 @@ SegmentTable::checksFor(const Eigen::Vector3i& d) const
 {
   if (d.cwiseAbs().sum() > max_distance_)
     throw Error("segment table: offset beyond the table's distance");
-  const Span& span = spans_[spanIndex(d)];
-  return static_cast<std::size_t>(span.check_end - span.check_begin);
+  return check_spans_[spanIndex(d)].count;
 }
 
 std::size_t
@@ -176,8 +177,8 @@ SegmentTable::stretchesFor(const Eigen::Vector3i& d) const
 {
   if (d.cwiseAbs().sum() > max_distance_)
     throw Error("segment table: offset beyond the table's distance");
-  const Span& span = spans_[spanIndex(d)];
-  return static_cast<std::size_t>(span.stretch_end - span.stretch_begin);
+  const StretchSpan& span = stretch_spans_[spanIndex(d)];
+  return static_cast<std::size_t>(span.end - span.begin);
 }
 
 } // namespace visfeat

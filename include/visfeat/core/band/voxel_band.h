@@ -46,6 +46,9 @@ public:
   {
     /** \brief Add cells so that 26-adjacent mixed cells are 6-connected. */
     bool repair = true;
+    /** \brief Threads for the parallel steps (building from a cloud, adjacency,
+     * point cells); 0 (default) = all available. The band does not depend on it. */
+    int threads = 0;
   };
 
   using Neighbours = std::array<CellId, 6>;
@@ -114,7 +117,9 @@ public:
   estimateBytes(const GridSpec& grid, std::size_t cells, std::size_t points);
 
 private:
-  void finalize(std::vector<CellCoord> coords, std::vector<std::uint32_t> counts);
+  void finalize(std::vector<CellCoord> coords,
+                std::vector<std::uint32_t> counts,
+                int threads);
 
   GridSpec grid_;
   std::vector<CellCoord> coords_;

@@ -54,20 +54,31 @@ public:
             const Eigen::Vector3i& d,
             double opacity) const
   {
-    const Span& span = spans_[spanIndex(d)];
+    const std::size_t at = spanIndex(d);
     const std::uint8_t* cells = window.cells() + source;
     if (opacity <= 0.0) {
+      const CheckSpan& span = check_spans_[at];
+      const std::int32_t* v = checks_.data() + span.begin;
+      const std::int32_t* end = v + span.count;
+      if (span.fold == 0) { // no zero coordinate: every stretch is a single subcell
+        for (; v != end; ++v) {
+          const unsigned mask = static_cast<unsigned>(*v) & 0xFFu;
+          if ((cells[*v >> 8] & mask) != mask)
+            return false;
+        }
+        return true;
+      }
       const std::uint8_t* fold = folds_[span.fold].data();
-      for (std::int32_t i = span.check_begin; i < span.check_end; ++i) {
-        const std::int32_t v = checks_[static_cast<std::size_t>(i)];
-        const unsigned mask = static_cast<unsigned>(v) & 0xFFu;
-        if ((fold[cells[v >> 8]] & mask) != mask)
+      for (; v != end; ++v) {
+        const unsigned mask = static_cast<unsigned>(*v) & 0xFFu;
+        if ((fold[cells[*v >> 8]] & mask) != mask)
           return false;
       }
       return true;
     }
+    const StretchSpan& span = stretch_spans_[at];
     double blocked = 0.0;
-    for (std::int32_t i = span.stretch_begin; i < span.stretch_end; ++i) {
+    for (std::int32_t i = span.begin; i < span.end; ++i) {
       const std::int32_t v = stretches_[static_cast<std::size_t>(i)];
       if ((cells[v >> 8] & static_cast<unsigned>(v) & 0xFFu) == 0 &&
           (blocked += stretch_length_[static_cast<std::size_t>(i)]) >= opacity)
@@ -90,11 +101,18 @@ public:
   std::size_t stretchesFor(const Eigen::Vector3i& d) const;
 
 private:
-  struct Span
+  /** The exact test's checks of one offset: checks_[begin, begin + count). */
+  struct CheckSpan
   {
-    std::int32_t check_begin = 0, check_end = 0;     // checks_
-    std::int32_t stretch_begin = 0, stretch_end = 0; // stretches_
+    std::int32_t begin = 0;
+    std::uint16_t count = 0;
     std::uint8_t fold = 0; // folds_: bit a set when d's coordinate a is 0
+  };
+
+  /** The stretches of one offset: stretches_[begin, end). */
+  struct StretchSpan
+  {
+    std::int32_t begin = 0, end = 0;
   };
 
   /** Only the offsets with |d|_1 <= max_distance are stored (an octahedron, ~1/6 of
@@ -113,8 +131,9 @@ private:
 
   int max_distance_ = 0;
   int window_bricks_ = 1;
-  std::vector<std::int32_t> row_start_; // per (dy, dz), (2 max_distance + 1)^2
-  std::vector<Span> spans_;
+  std::vector<std::int32_t> row_start_;    // per (dy, dz), (2 max_distance + 1)^2
+  std::vector<CheckSpan> check_spans_;     // per offset, spanIndex order
+  std::vector<StretchSpan> stretch_spans_; // per offset, spanIndex order
   /** (window offset << 8) | mask: the exact test's checks. */
   std::vector<std::int32_t> checks_;
   /** (window offset << 8) | subcells: the stretches, for an opacity. */
