@@ -32,6 +32,9 @@
 #include <vector>
 
 #include <sys/resource.h>
+#ifdef __GLIBC__
+#include <malloc.h>
+#endif
 #ifdef _OPENMP
 #endif
 
@@ -113,7 +116,8 @@ fail(const std::string& message)
 
 /** \brief Peak resident memory. Linux lets a process reset its high-water mark
  * (/proc/self/clear_refs, "5"); when that works each run reports its own peak (VmHWM),
- * otherwise getrusage's ru_maxrss, the peak of the whole process so far. */
+ * otherwise getrusage's ru_maxrss, the peak of the whole process so far. Either way
+ * the peak includes what is resident when the run starts (the input cloud). */
 class PeakMemory
 {
 public:
@@ -121,8 +125,13 @@ public:
 
   bool perRun() const { return per_run_; }
 
+  /** Returns the heap the previous runs freed to the system first (glibc keeps it
+   * otherwise, and it would count in this run's resident peak), then resets. */
   void startRun() const
   {
+#ifdef __GLIBC__
+    malloc_trim(0);
+#endif
     if (per_run_)
       reset();
   }

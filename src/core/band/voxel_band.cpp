@@ -218,14 +218,20 @@ VoxelBand::build(const GridSpec& grid,
   for (const std::int32_t entry : point_occupied)
     if (entry >= 0 && static_cast<std::size_t>(entry) >= occupied.size())
       throw Error("a point refers to an occupied cell that does not exist");
+  // The final id of every occupied entry once, then of every point through its entry.
+  std::vector<CellId> entry_cell(occupied.size());
+  parallelFor(occupied.size(), options.threads, kCellsPerChunk,
+              [&](std::size_t begin, std::size_t end) {
+                for (std::size_t e = begin; e < end; ++e)
+                  entry_cell[e] = band.find(occupied[e].coord);
+              });
   band.point_cell_.assign(point_occupied.size(), kNoCell);
   parallelFor(point_occupied.size(), options.threads, kPointsPerChunk,
               [&](std::size_t begin, std::size_t end) {
                 for (std::size_t p = begin; p < end; ++p) {
                   const std::int32_t entry = point_occupied[p];
                   if (entry >= 0)
-                    band.point_cell_[p] =
-                      band.find(occupied[static_cast<std::size_t>(entry)].coord);
+                    band.point_cell_[p] = entry_cell[static_cast<std::size_t>(entry)];
                 }
               });
   return band;
