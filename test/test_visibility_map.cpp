@@ -185,6 +185,53 @@ TEST_P(RadiusReferenceTest, RadiiMatchReferenceOnEveryCell)
   }
 }
 
+// The map works a brick (8^3 cells) at a time, 64 sources at once, inside a window of
+// 1 + 2 ceil(cap / 8) bricks a side: a folded slab fills its bricks (up to 256 sources
+// a brick, four batches) and caps 1 to 64 change the window from 3 to 17 bricks a side.
+// Every radius against the brute-force reference, with and without an opacity.
+TEST(VisibilityMap, BatchesAndWindowsOfEveryCapMatchReference)
+{
+  std::vector<CellCoord> cells;
+  for (int z = 3; z < 7; ++z) // a slab 4 cells thick, 14 x 14 ...
+    for (int y = 3; y < 17; ++y)
+      for (int x = 3; x < 17; ++x)
+        cells.emplace_back(x, y, z);
+  for (int z = 7; z < 13; ++z) // ... with a wall on one side, 2 cells thick ...
+    for (int y = 3; y < 17; ++y)
+      for (int x = 3; x < 5; ++x)
+        cells.emplace_back(x, y, z);
+  for (int z = 7; z < 11; ++z) // ... and a post that hides part of the slab
+    for (int y = 9; y < 11; ++y)
+      for (int x = 10; x < 12; ++x)
+        cells.emplace_back(x, y, z);
+  VoxelBand::Options no_repair;
+  no_repair.repair = false;
+  const VoxelBand band = VoxelBand::fromCells(cubeGrid(20), cells, no_repair);
+  const FreeSpace fs(band);
+  const ref::FreeSubcells rfs(band.grid(), band.coords());
+  for (const int cap : {1, 9, 17, VisibilityMap::kMaxRadius})
+    for (const double opacity : {0.0, 2.0}) {
+      if (cap == VisibilityMap::kMaxRadius && opacity > 0.0)
+        continue; // the reference's time grows with the cap
+      const std::vector<int> expected = ref::radii(band.coords(), rfs, cap, opacity);
+      const VisibilityMap map =
+        VisibilityMap::compute(band, fs, params(cap, opacity, 2));
+      std::size_t mismatches = 0, below_cap = 0;
+      for (std::size_t i = 0; i < band.size(); ++i) {
+        below_cap += expected[i] < cap;
+        if (map.radius(static_cast<CellId>(i)) != expected[i] && mismatches++ < 3)
+          ADD_FAILURE() << "cap " << cap << " opacity " << opacity << ": cell "
+                        << toString(band.coord(static_cast<CellId>(i))) << " radius "
+                        << int(map.radius(static_cast<CellId>(i))) << ", reference "
+                        << expected[i];
+      }
+      EXPECT_EQ(mismatches, 0u) << "cap " << cap << " opacity " << opacity;
+      if (cap > 3 && opacity == 0.0) {
+        EXPECT_GT(below_cap, 0u) << "cap " << cap << ": the wall and post hide nothing";
+      }
+    }
+}
+
 std::string
 bandName(const ::testing::TestParamInfo<std::size_t>& info)
 {
