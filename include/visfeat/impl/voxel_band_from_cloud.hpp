@@ -108,13 +108,13 @@ buildVoxelBand(const pcl::PointCloud<PointT>& cloud,
       ++start[brickOf(p) + 1];
   for (std::size_t b = 1; b < start.size(); ++b)
     start[b] += start[b - 1];
-  const std::vector<std::uint32_t> brick_start = start;
   pcl::Indices finite(start.back());
   for (std::size_t i = 0; i < cloud.size(); ++i)
     if (pcl::isXYZFinite(cloud[i]))
       finite[start[brickOf(cloud[i])]++] = static_cast<pcl::index_t>(i);
 
-  // Slabs of about equal point counts, cut between bricks.
+  // Slabs of about equal point counts, cut between bricks: after the scatter, start[b]
+  // is where brick b ends (and brick b + 1 begins).
   const int threads = resolveThreads(options.threads);
   const std::size_t slabs = std::max<std::size_t>(
     1, std::min<std::size_t>(static_cast<std::size_t>(threads),
@@ -123,7 +123,7 @@ buildVoxelBand(const pcl::PointCloud<PointT>& cloud,
   cut[0] = 0;
   for (std::size_t s = 1; s < slabs; ++s) {
     const auto target = static_cast<std::uint32_t>(finite.size() * s / slabs);
-    cut[s] = *std::lower_bound(brick_start.begin(), brick_start.end(), target);
+    cut[s] = *std::lower_bound(start.begin(), start.end(), target);
   }
 
   std::vector<std::vector<OccupiedCell>> slab_cells(slabs);
