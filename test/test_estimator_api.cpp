@@ -459,6 +459,9 @@ TEST(ResolutionEstimation, EstimatorUsesItWithResolutionZero)
   est.setInputCloud(cloud);
   est.setResolution(0);
   est.setMinRadius(8);
+  // the band from the points alone: the resolution is the density's (with a fill it
+  // is raised, see SparseCloudsAreFilledAtTheTopologyResolution)
+  est.setSurfaceFill(visfeat::SurfaceFill::kPoints);
   Output out;
   est.compute(out);
   ASSERT_EQ(est.getErrorMessage(), "");

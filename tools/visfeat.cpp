@@ -222,6 +222,8 @@ configureEstimator(Estimator& estimator,
     estimator.setSmoothingRadius(opt.smooth);
   estimator.setNumberOfThreads(static_cast<unsigned int>(opt.threads));
   estimator.setBandRepair(opt.repair);
+  estimator.setSurfaceFill(opt.fill);
+  estimator.setLocalTriangleParameters(opt.fill_triangles);
   estimator.setMemoryLimit(static_cast<std::uint64_t>(opt.memory_limit_mb) * 1024u *
                            1024u);
   if (!opt.quiet)
@@ -239,7 +241,12 @@ compute(Estimator& estimator,
 {
   print_highlight("Computing visibility features ");
   print_info("(resolution ");
-  print_value("%d", opt.resolution);
+  if (opt.resolution == 0)
+    print_value("auto");
+  else
+    print_value("%d", opt.resolution);
+  print_info(", fill ");
+  print_value("%s", visfeat::surfaceFillName(opt.fill));
   print_info(", max radius ");
   print_value("%d", opt.max_radius);
   print_info(", opacity ");
@@ -296,6 +303,17 @@ printSummary(const Estimator& estimator, const vt::Options& opt)
 {
   const visfeat::GridSpec& grid = estimator.getGrid();
   const visfeat::VoxelBand& band = estimator.getVoxelBand();
+  const visfeat::ResolutionEstimate& resolution = estimator.getResolutionEstimate();
+  if (opt.resolution == 0) {
+    print_info("Resolution ");
+    print_value("%d", resolution.resolution);
+    print_info(" chosen: %s; -resolution overrides\n", resolution.reason.c_str());
+  }
+  print_info("Band from ");
+  print_value("%s", visfeat::surfaceFillName(estimator.getSurfaceFillUsed()));
+  print_info(": %s; -fill overrides\n", estimator.getSurfaceFillReason().c_str());
+  for (const std::string& note : estimator.getNotes())
+    print_info("Note: %s\n", note.c_str());
   print_info("Grid: origin (");
   print_value("%g %g %g", grid.origin.x(), grid.origin.y(), grid.origin.z());
   print_info("), cell ");
@@ -306,6 +324,10 @@ printSummary(const Estimator& estimator, const vt::Options& opt)
   print_value("%zu", band.size());
   print_info(" (repair cells ");
   print_value("%zu", band.repairCellCount());
+  if (band.fillCellCount() > 0) {
+    print_info(", fill cells ");
+    print_value("%zu", band.fillCellCount());
+  }
   print_info(")\n");
   const visfeat::PhaseTimes& times = estimator.getPhaseTimes();
   print_info("Phases: grid ");
@@ -338,6 +360,8 @@ printSummary(const Estimator& estimator, const vt::Options& opt)
   print_info(" edges, ");
   print_value("%zu", counts[3]);
   print_info(" faces\n");
+  for (const std::string& warning : estimator.getWarnings())
+    print_warn("Warning: %s\n", warning.c_str());
 }
 
 int

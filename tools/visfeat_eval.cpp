@@ -148,6 +148,9 @@ struct Settings
   std::vector<std::string> models;
   std::vector<double> noise{0.0, 0.22, 0.32, 0.45};
   int resolution = 256;
+  bool set_resolution = false;
+  std::size_t points = 0; // 0: 0.5-cell spacing at the resolution
+  visfeat::LocalTriangleParameters fill;
   long long seed = 1;
   bool set_opacity = false, set_min_radius = false, set_max_radius = false;
   bool noise_mode = false;
@@ -369,10 +372,11 @@ evaluate(const Settings& s, const std::string& name, double sigma)
     syn::rotated(syn::cadModelByName(name), syn::randomRotation(seed));
   // The model's nominal cell: noise, tolerances and the VCM radii are in it (visfeat's
   // own grid is a little coarser with noise, its box being larger).
-  const double cell = syn::cellSize(model, s.resolution);
-  row.cell = cell;
+  double cell = syn::cellSize(model, s.resolution);
   syn::SamplingOptions options;
-  options.count = syn::samplesForSpacing(model, s.resolution, kSpacingCells);
+  options.count = s.points > 0
+                    ? s.points
+                    : syn::samplesForSpacing(model, s.resolution, kSpacingCells);
   options.seed = seed;
   options.noise_sigma = sigma * cell;
   const syn::CadSamples samples = syn::sampleCadModel(model, options);
@@ -385,14 +389,14 @@ evaluate(const Settings& s, const std::string& name, double sigma)
   cloud->height = 1;
   cloud->is_dense = true;
   std::vector<double> distance_cells(samples.curve_distance.size());
-  for (std::size_t i = 0; i < distance_cells.size(); ++i)
-    distance_cells[i] = samples.curve_distance[i] / cell;
   progress("# %s sigma %.2f: %zu points; visfeat...", name.c_str(), sigma, row.points);
 
   {
     visfeat::VisibilityFeatureEstimation<pcl::PointXYZ, visfeat::PointVisibility> est;
     est.setInputCloud(cloud);
-    est.setResolution(s.resolution);
+    // -points without -resolution: the library's automatic resolution and fill
+    est.setResolution(s.points > 0 && !s.set_resolution ? 0 : s.resolution);
+    est.setLocalTriangleParameters(s.fill);
     est.setNoiseMode(s.noise_mode);
     if (s.set_opacity)
       est.setOpacity(s.opacity);
@@ -414,6 +418,12 @@ evaluate(const Settings& s, const std::string& name, double sigma)
       progress(" failed\n");
       return row;
     }
+    // distances in cells, or in point spacings where the cells are finer
+    if (s.points > 0)
+      cell = std::max(est.getGrid().cell_size,
+                      std::sqrt(model.area() / static_cast<double>(s.points)));
+    for (std::size_t i = 0; i < distance_cells.size(); ++i)
+      distance_cells[i] = samples.curve_distance[i] / cell;
     std::vector<std::uint32_t> labels(out.size());
     std::vector<std::uint8_t> classes(out.size()), feature(out.size());
     for (std::size_t i = 0; i < out.size(); ++i) {
@@ -428,6 +438,7 @@ evaluate(const Settings& s, const std::string& name, double sigma)
                                        classes, est.getTopologyGraph(), cell);
     progress(" %.2f s, F1 %.3f", row.seconds, row.scores.f1());
   }
+  row.cell = cell;
 
   if (s.pcl) {
     progress("; PCL...");
@@ -461,11 +472,12 @@ evaluate(const Settings& s, const std::string& name, double sigma)
 int
 run(int argc, char** argv)
 {
-  const vt::Arguments args(argc, argv,
-                           {"-models", "-noise", "-resolution", "-seed", "-opacity",
-                            "-min_radius", "-max_radius", "-threads", "-peers",
-                            "-cgal_max_points", "-quantiles", "-json"},
-                           {"-noise_mode", "-h", "--help"});
+  const vt::Arguments args(
+    argc, argv,
+    {"-models", "-noise", "-resolution", "-seed", "-opacity", "-min_radius",
+     "-max_radius", "-threads", "-peers", "-cgal_max_points", "-quantiles", "-json",
+     "-points", "-fill_edge", "-fill_neighbours", "-fill_inset", "-fill_votes"},
+    {"-noise_mode", "-h", "--help"});
   if (!args.ok())
     return fail(args.error());
   if (!args.positional().empty())
@@ -487,8 +499,14 @@ run(int argc, char** argv)
                        error) ||
       !args.getInteger("-cgal_max_points", 0, std::numeric_limits<long long>::max(),
                        s.cgal_max_points, error) ||
-      !args.getInteger("-quantiles", 0, 1000000, s.quantiles, error))
+      !args.getInteger("-quantiles", 0, 1000000, s.quantiles, error) ||
+      !args.getInteger("-points", 0, 1LL << 31, s.points, error) ||
+      !args.getReal("-fill_edge", 1.0, 10.0, s.fill.max_edge_spacings, error) ||
+      !args.getInteger("-fill_neighbours", 4, 64, s.fill.neighbours, error) ||
+      !args.getReal("-fill_inset", 0.0, 0.4, s.fill.cell_inset, error) ||
+      !args.getInteger("-fill_votes", 1, 3, s.fill.min_votes, error))
     return fail(error);
+  s.set_resolution = args.has("-resolution");
   s.set_opacity = args.has("-opacity");
   s.noise_mode = args.has("-noise_mode");
   s.set_min_radius = args.has("-min_radius");

@@ -23,11 +23,28 @@ namespace visfeat_tools {
 const std::set<std::string>&
 valueOptions()
 {
-  static const std::set<std::string> names{
-    "-resolution",      "-max_radius", "-min_radius", "-vertex_cells",
-    "-dimensionality",  "-opacity",    "-smooth",     "-threads",
-    "-memory_limit_mb", "-voxels",     "-graph",      "-mesh_points",
-    "-mesh_spacing",    "-png",        "-png_radius", "-png_size"};
+  static const std::set<std::string> names{"-resolution",
+                                           "-max_radius",
+                                           "-min_radius",
+                                           "-vertex_cells",
+                                           "-dimensionality",
+                                           "-opacity",
+                                           "-smooth",
+                                           "-threads",
+                                           "-memory_limit_mb",
+                                           "-voxels",
+                                           "-graph",
+                                           "-mesh_points",
+                                           "-mesh_spacing",
+                                           "-png",
+                                           "-png_radius",
+                                           "-png_size",
+                                           "-fill",
+                                           "-fill_neighbours",
+                                           "-fill_gap",
+                                           "-fill_edge",
+                                           "-fill_inset",
+                                           "-fill_votes"};
   return names;
 }
 
@@ -112,6 +129,29 @@ printHelp(const char* program)
              "6-connected (default: ");
   print_value("repair on");
   print_info(")\n");
+  print_info(
+    "    -fill F           = where the band comes from: points (the cells of "
+    "the\n"
+    "                        points), triangles (also the cells between "
+    "neighbouring\n"
+    "                        points, for clouds sparser than the cells), mesh "
+    "(the\n"
+    "                        input mesh's triangles), auto (default: mesh for a "
+    "mesh,\n"
+    "                        triangles below one point a cell length, else "
+    "points)\n");
+  print_info("    -fill_neighbours K = neighbours a point's triangles join (default: ");
+  print_value("%d", visfeat::LocalTriangleParameters{}.neighbours);
+  print_info(")\n");
+  print_info("    -fill_gap DEG     = wider angular gaps between neighbours stay open, "
+             "a scan's\n"
+             "                        border (default: ");
+  print_value("%g", visfeat::LocalTriangleParameters{}.max_gap_degrees);
+  print_info(" degrees)\n");
+  print_info("    -fill_edge S      = longest triangle edge in local point spacings "
+             "(default: ");
+  print_value("%g", visfeat::LocalTriangleParameters{}.max_edge_spacings);
+  print_info(")\n");
   print_info("    -memory_limit_mb M = refuse grids needing more memory (default: ");
   print_value("0");
   print_info(" = 3/4 of physical memory, MiB)\n");
@@ -166,6 +206,19 @@ readValues(const Arguments& args, Options& opt, std::string& error)
       !args.getReal("-mesh_spacing", -std::numeric_limits<double>::max(),
                     std::numeric_limits<double>::max(), opt.mesh.spacing, error))
     return false;
+  using Fill = visfeat::LocalTriangleParameters;
+  if (!integer("-fill_neighbours", Fill::kNeighboursRange,
+               opt.fill_triangles.neighbours) ||
+      !real("-fill_gap", Fill::kMaxGapRange, opt.fill_triangles.max_gap_degrees) ||
+      !real("-fill_edge", Fill::kMaxEdgeRange, opt.fill_triangles.max_edge_spacings) ||
+      !real("-fill_inset", Fill::kCellInsetRange, opt.fill_triangles.cell_inset) ||
+      !integer("-fill_votes", Fill::kMinVotesRange, opt.fill_triangles.min_votes))
+    return false;
+  if (args.has("-fill") && !visfeat::parseSurfaceFill(args.value("-fill"), opt.fill)) {
+    error = "-fill expects auto, points, triangles or mesh, got '" +
+            args.value("-fill") + "'";
+    return false;
+  }
   if (opt.paper_noise && opt.noise_mode) {
     error = "-paper_noise and -noise_mode are two settings for noise: give one";
     return false;

@@ -10,6 +10,7 @@
 #include <visfeat/core/common/parameters.h>
 #include <visfeat/core/segmentation/components.h>
 #include <visfeat/core/visibility/visibility_map.h>
+#include <visfeat/surface_fill.h>
 
 #include <set>
 #include <string>
@@ -45,6 +46,8 @@ struct Options
   double smooth = -1.0; // -1 = as the mode says
   int threads = kDefaultThreads;
   bool repair = true;
+  visfeat::SurfaceFill fill = visfeat::SurfaceFill::kAuto;
+  visfeat::LocalTriangleParameters fill_triangles;
   long long memory_limit_mb = 0;
   std::string voxels;
   std::string graph;

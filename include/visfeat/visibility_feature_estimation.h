@@ -3,11 +3,14 @@
 #include <visfeat/core/band/point_smoothing.h>
 #include <visfeat/core/band/voxel_band.h>
 #include <visfeat/core/graph/topology_graph.h>
+#include <visfeat/core/grid/cloud_shape.h>
 #include <visfeat/core/grid/resolution.h>
+#include <visfeat/core/mesh/mesh_sampling.h>
 #include <visfeat/core/segmentation/feature_segmentation.h>
 #include <visfeat/core/visibility/free_space.h>
 #include <visfeat/core/visibility/visibility_map.h>
 #include <visfeat/point_types.h>
+#include <visfeat/surface_fill.h>
 
 #include <pcl/features/feature.h>
 
@@ -207,7 +210,9 @@ public:
   /** \brief Per point: a point is an edge or vertex point when within this distance,
    * in cells, of the middle line of a skeleton around it (PointLabeling; 0 = points
    * take their cell's label). Default 1.0, or kNoisePointDistance (1.25) in the noise
-   * mode, unless set; range SegmentationParameters::kPointFeatureDistanceRange
+   * mode, unless set; when the band is filled between points sparser than the cells
+   * (getSurfaceFillUsed(), spacing s > 1 cell) the default is multiplied by s, so it
+   * counts point spacings. Range SegmentationParameters::kPointFeatureDistanceRange
    * ([0, 10] cells). */
   inline void setPointFeatureDistance(double cells) { point_feature_distance_ = cells; }
   /** \brief The distance compute() will use. */
@@ -250,6 +255,36 @@ public:
    * (setNoiseMode()) does better. */
   inline void setOpacity(double opacity) { opacity_ = opacity; }
   inline double getOpacity() const { return opacity_; }
+
+  /** \brief Where the band's cells come from (SurfaceFill; default kAuto: the input
+   * mesh when one is set, the umbrella triangles between the points when the cloud
+   * has fewer than about one point per cell length, else the points). */
+  inline void setSurfaceFill(SurfaceFill fill) { surface_fill_ = fill; }
+  inline SurfaceFill getSurfaceFill() const { return surface_fill_; }
+
+  /** \brief The fill's triangles between the points (LocalTriangleParameters). */
+  inline void setLocalTriangleParameters(const LocalTriangleParameters& parameters)
+  {
+    local_triangles_ = parameters;
+  }
+  inline const LocalTriangleParameters& getLocalTriangleParameters() const
+  {
+    return local_triangles_;
+  }
+
+  /** \brief A triangle mesh of the same surface (world units, the input cloud's
+   * frame): with the fill kAuto or kMesh the band is its exact rasterisation
+   * (rasterizeTriangles()) plus the cells of the points, and the grid covers both.
+   * Per-point output stays on the input cloud (e.g. the mesh's vertices or points
+   * sampled on it). nullptr (default) = none. */
+  inline void setInputMesh(const std::shared_ptr<const SurfaceMesh>& mesh)
+  {
+    mesh_ = mesh;
+  }
+  inline const std::shared_ptr<const SurfaceMesh>& getInputMesh() const
+  {
+    return mesh_;
+  }
 
   /** \brief Make the band 6-connected by adding cells (default true). */
   inline void setBandRepair(bool repair) { band_options_.repair = repair; }
@@ -314,6 +349,16 @@ public:
   {
     return resolution_estimate_;
   }
+  /** \brief The fill the last successful compute() used (never kAuto) and why, in
+   * one line. */
+  inline SurfaceFill getSurfaceFillUsed() const { return fill_used_; }
+  inline const std::string& getSurfaceFillReason() const { return fill_reason_; }
+
+  /** \brief Warnings on the last successful compute(), one line each with the cause
+   * and what to do: results that cannot be trusted (no region, too few cells reach
+   * min_radius, a band too sparse for the resolution). Also sent as PCL_WARN. */
+  inline const std::vector<std::string>& getWarnings() const { return warnings_; }
+
   /** \brief Notes on the input, one line each (e.g. a coplanar cloud: one face). */
   inline const std::vector<std::string>& getNotes() const { return notes_; }
 
@@ -347,7 +392,10 @@ private:
     TopologyGraphParameters graph;
     GridSpec grid;
     ResolutionEstimate resolution;
+    SurfaceFill fill = SurfaceFill::kPoints;
+    std::string fill_reason;
     std::vector<std::string> notes;
+    std::vector<std::string> warnings;
     PhaseTimes times;
   };
 
@@ -363,6 +411,10 @@ private:
   };
 
   Run prepare() const;
+  int chooseResolution(const CloudShape& shape, Run& run) const;
+  void chooseFill(Run& run) const;
+  std::vector<CellCoord> fillCells(const Run& run, const PointCloudIn& surface) const;
+  void checkResults(const Results& results, Run& run) const;
   void checkMemoryBudget(const Run& run) const;
   void checkBandMemory(const VoxelBand& band,
                        std::uint64_t mask_bytes,
@@ -391,6 +443,9 @@ private:
   ProgressCallback progress_;
   int graph_dilation_ = -1;
   bool keep_free_space_ = false;
+  SurfaceFill surface_fill_ = SurfaceFill::kAuto;
+  LocalTriangleParameters local_triangles_;
+  std::shared_ptr<const SurfaceMesh> mesh_;
 
   // Between initCompute() and computeFeature().
   std::unique_ptr<Run> run_;
@@ -403,7 +458,10 @@ private:
   TopologyGraph graph_;
   PhaseTimes times_;
   ResolutionEstimate resolution_estimate_;
+  SurfaceFill fill_used_ = SurfaceFill::kPoints;
+  std::string fill_reason_;
   std::vector<std::string> notes_;
+  std::vector<std::string> warnings_;
   std::string error_;
 };
 

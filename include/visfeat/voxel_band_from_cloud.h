@@ -25,7 +25,8 @@ GridSpec gridForCloud(const pcl::PointCloud<PointT>& cloud, int resolution);
 template <typename PointT>
 VoxelBand buildVoxelBand(const pcl::PointCloud<PointT>& cloud,
                          const GridSpec& grid,
-                         const VoxelBand::Options& options);
+                         const VoxelBand::Options& options,
+                         const std::vector<CellCoord>& fill = {});
 
 } // namespace visfeat
 

@@ -5,7 +5,6 @@
 #include <visfeat/resolution_estimation.h>
 
 #include <pcl/console/print.h>
-#include <pcl/console/time.h>
 
 namespace visfeat_tools {
 
@@ -30,24 +29,9 @@ checkShapeAndResolution(const std::string& input,
     return false;
   }
   if (!user_resolution) {
-    TicToc tt;
-    tt.tic();
-    print_highlight("Estimating the point spacing ");
-    visfeat::ResolutionEstimate estimate;
-    try {
-      estimate = visfeat::estimateResolution(xyz, shape.extent);
-    } catch (const visfeat::Error& e) {
-      print_info("\n");
-      error = "'" + input + "': " + e.what() + "; give -resolution";
-      return false;
-    }
-    resolution = estimate.resolution;
-    print_info("[done, ");
-    print_value("%g", tt.toc());
-    print_info(" ms]\n");
-    print_info("Resolution ");
-    print_value("%d", resolution);
-    print_info(" chosen: %s; -resolution overrides\n", estimate.reason.c_str());
+    // The library chooses it from the spacing and the fill (printed after the run).
+    resolution = 0;
+    return true;
   }
   problem = visfeat::shapeProblem(shape, resolution);
   if (!problem.empty()) {
@@ -58,9 +42,6 @@ checkShapeAndResolution(const std::string& input,
     error = "'" + input + "': " + problem;
     return false;
   }
-  const std::string note = visfeat::shapeNote(shape);
-  if (!note.empty())
-    print_info("Note: %s\n", note.c_str());
   return true;
 }
 

@@ -124,28 +124,13 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::prepare() const
     throw Error(msg.str());
   }
 
-  // The shape: refuse clouds without a surface, note flat ones; the resolution.
+  // The shape: refuse clouds without a surface, note flat ones; the resolution, the
+  // fill.
   const CloudShape shape = cloudShapeOf(*surface_);
   std::string problem = shapeProblem(shape, 0);
   if (!problem.empty())
     throw Error(problem);
-  int resolution = resolution_;
-  if (resolution == kAutomaticResolution) {
-    if (hasExtent(shape)) {
-      try {
-        run.resolution = estimateResolution(*surface_, shape.extent);
-      } catch (const Error& e) {
-        throw Error(std::string(e.what()) + "; set the resolution (setResolution())");
-      }
-      resolution = run.resolution.resolution;
-    } else {
-      resolution = GridSpec::kMinResolution; // the grid refuses the cloud, saying why
-    }
-  } else {
-    run.resolution.resolution = resolution;
-    run.resolution.extent = shape.extent;
-    run.resolution.reason = "set by setResolution()";
-  }
+  const int resolution = chooseResolution(shape, run);
   problem = shapeProblem(shape, resolution);
   if (!problem.empty())
     throw Error(problem);
@@ -155,10 +140,141 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::prepare() const
   run.times.shape_ms = detail::millisecondsSince(start);
 
   start = std::chrono::steady_clock::now();
-  run.grid = gridForCloud(*surface_, resolution);
+  if (mesh_ && surface_fill_ != SurfaceFill::kPoints) {
+    // the grid covers the mesh too: its triangles reach beyond the points
+    validateMesh(*mesh_);
+    Eigen::Vector3d lo =
+      Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
+    Eigen::Vector3d hi = -lo;
+    for (const PointInT& p : surface_->points)
+      if (pcl::isXYZFinite(p)) {
+        lo = lo.cwiseMin(Eigen::Vector3d(p.x, p.y, p.z));
+        hi = hi.cwiseMax(Eigen::Vector3d(p.x, p.y, p.z));
+      }
+    for (const Eigen::Vector3d& v : mesh_->vertices) {
+      lo = lo.cwiseMin(v);
+      hi = hi.cwiseMax(v);
+    }
+    pcl::PointCloud<pcl::PointXYZ> corners;
+    corners.push_back(pcl::PointXYZ(static_cast<float>(lo.x()),
+                                    static_cast<float>(lo.y()),
+                                    static_cast<float>(lo.z())));
+    corners.push_back(pcl::PointXYZ(static_cast<float>(hi.x()),
+                                    static_cast<float>(hi.y()),
+                                    static_cast<float>(hi.z())));
+    run.grid = gridForCloud(corners, resolution);
+  } else {
+    run.grid = gridForCloud(*surface_, resolution);
+  }
+  chooseFill(run);
   checkMemoryBudget(run);
   run.times.grid_ms = detail::millisecondsSince(start);
   return run;
+}
+
+template <typename PointInT, typename PointOutT>
+int
+VisibilityFeatureEstimation<PointInT, PointOutT>::chooseResolution(
+  const CloudShape& shape, Run& run) const
+{
+  if (resolution_ != kAutomaticResolution) {
+    run.resolution.resolution = resolution_;
+    run.resolution.extent = shape.extent;
+    run.resolution.reason = "set by setResolution()";
+    // the fill needs the spacing; it is cheap to measure on clouds that may need it
+    if (surface_fill_ == SurfaceFill::kAuto && !mesh_ && hasExtent(shape) &&
+        static_cast<double>(surface_->size()) <
+          kFillCheckPointsPerCell2 * double(resolution_) * double(resolution_)) {
+      const ResolutionEstimate density = estimateResolution(*surface_, shape.extent);
+      run.resolution.spacing = density.spacing;
+      run.resolution.k = density.k;
+      run.resolution.queries = density.queries;
+    }
+    return resolution_;
+  }
+  if (!hasExtent(shape))
+    return GridSpec::kMinResolution; // the grid refuses the cloud, saying why
+  try {
+    run.resolution = estimateResolution(*surface_, shape.extent);
+  } catch (const Error& e) {
+    throw Error(std::string(e.what()) + "; set the resolution (setResolution())");
+  }
+  const bool may_fill = surface_fill_ == SurfaceFill::kAuto ||
+                        surface_fill_ == SurfaceFill::kLocalTriangles ||
+                        (surface_fill_ == SurfaceFill::kMesh && mesh_);
+  const int from_density = run.resolution.resolution;
+  if (may_fill && from_density < kTopologyResolution) {
+    // the fill lets cells be finer than the points, up to kMaxFillCellsPerSpacing
+    const double supported = kMaxFillCellsPerSpacing * run.resolution.extent /
+                             std::max(run.resolution.spacing, 1e-300);
+    const int raised = mesh_ ? kTopologyResolution
+                             : static_cast<int>(std::min<double>(
+                                 kTopologyResolution, std::floor(supported)));
+    if (raised > from_density) {
+      std::ostringstream reason;
+      reason << run.resolution.reason << "; the points alone support " << from_density
+             << ", raised to " << raised << " for the topology ("
+             << (mesh_ ? "the mesh is rasterised exactly"
+                       : "the band is filled between the points, at most " +
+                           std::to_string(int(kMaxFillCellsPerSpacing)) +
+                           " cells a spacing")
+             << "; features about " << 2 * getMinRadius() << " cells apart separate, "
+             << kTopologyResolution
+             << " suits parts whose faces span 1/8 of their size)";
+      run.resolution.resolution = raised;
+      run.resolution.reason = reason.str();
+    }
+  }
+  return run.resolution.resolution;
+}
+
+template <typename PointInT, typename PointOutT>
+void
+VisibilityFeatureEstimation<PointInT, PointOutT>::chooseFill(Run& run) const
+{
+  if (surface_fill_ == SurfaceFill::kMesh && !mesh_)
+    throw Error("the surface fill 'mesh' needs a mesh: call setInputMesh() first");
+  const double spacing_cells = run.resolution.spacing / run.grid.cell_size;
+  std::ostringstream reason;
+  if (surface_fill_ != SurfaceFill::kAuto) {
+    run.fill = surface_fill_;
+    reason << "set by setSurfaceFill()";
+  } else if (mesh_) {
+    run.fill = SurfaceFill::kMesh;
+    reason << "a mesh was given: its triangles rasterised";
+  } else if (run.resolution.spacing > 0.0 && spacing_cells > kFillSpacingCells) {
+    run.fill = SurfaceFill::kLocalTriangles;
+    reason << "point spacing " << spacing_cells << " cells, fewer than one point a cell"
+           << " length: the band is filled between neighbouring points";
+  } else {
+    run.fill = SurfaceFill::kPoints;
+    reason << "the cells of the points";
+    if (run.resolution.spacing > 0.0)
+      reason << " (point spacing " << spacing_cells << " cells)";
+  }
+  run.fill_reason = reason.str();
+  // Cells finer than the points: a point is a feature point within the distance in
+  // point spacings (unless set), as its neighbours lie that far apart.
+  if (run.fill != SurfaceFill::kPoints && !point_feature_distance_ &&
+      spacing_cells > 1.0)
+    run.segmentation.point_feature_distance *= spacing_cells;
+}
+
+template <typename PointInT, typename PointOutT>
+std::vector<CellCoord>
+VisibilityFeatureEstimation<PointInT, PointOutT>::fillCells(
+  const Run& run, const PointCloudIn& surface) const
+{
+  switch (run.fill) {
+  case SurfaceFill::kMesh:
+    return rasterizeTriangles(run.grid, mesh_->vertices, mesh_->triangles,
+                              run.visibility.threads);
+  case SurfaceFill::kLocalTriangles:
+    return localTriangleCells(surface, run.grid, local_triangles_,
+                              run.visibility.threads);
+  default:
+    return {};
+  }
 }
 
 template <typename PointInT, typename PointOutT>
@@ -294,7 +410,8 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::computeResults(
   auto start = Clock::now();
   VoxelBand::Options band_options = band_options_;
   band_options.threads = run.visibility.threads;
-  results.band = buildVoxelBand(*surface, run.grid, band_options);
+  results.band =
+    buildVoxelBand(*surface, run.grid, band_options, fillCells(run, *surface));
   run.times.band_ms = detail::millisecondsSince(start);
 
   start = Clock::now();
@@ -322,7 +439,60 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::computeResults(
   start = Clock::now();
   buildGraph(results, run, output);
   run.times.graph_ms = detail::millisecondsSince(start);
+  checkResults(results, run);
   return results;
+}
+
+template <typename PointInT, typename PointOutT>
+void
+VisibilityFeatureEstimation<PointInT, PointOutT>::checkResults(const Results& results,
+                                                               Run& run) const
+{
+  const VoxelBand& band = results.band;
+  const int min_radius = run.segmentation.components.min_radius;
+  std::size_t cores = 0;
+  for (std::size_t c = 0; c < band.size(); ++c)
+    if (results.map.radius(static_cast<CellId>(c)) >= min_radius)
+      ++cores;
+  std::size_t faces = 0;
+  for (const Region& region : results.segmentation.regions())
+    if (region.feature_class == FeatureClass::kFace)
+      ++faces;
+  const int resolution = run.grid.dims.maxCoeff() - 2 * GridSpec::kPadding;
+  const double core_share = band.empty() ? 0.0 : double(cores) / double(band.size());
+  const double repair_share =
+    band.empty() ? 0.0 : double(band.repairCellCount()) / double(band.size());
+  std::ostringstream w;
+  if (results.segmentation.regions().empty() || faces == 0) {
+    w << (faces == 0 && !results.segmentation.regions().empty() ? "no face found"
+                                                                : "no region found")
+      << ": " << cores << " of " << band.size() << " band cells reach min_radius "
+      << min_radius << " rings (a face core needs them); the features lie closer than "
+      << 2 * min_radius << " cells at resolution " << resolution
+      << " or the band is broken: raise the resolution";
+    if (run.fill == SurfaceFill::kPoints && run.resolution.spacing > 0.0)
+      w << " and fill the band between the points (fill 'triangles')";
+    w << ", or lower min_radius";
+    run.warnings.push_back(w.str());
+  } else if (core_share < kMinCoreShare) {
+    w << "only " << std::round(1000.0 * core_share) / 10.0
+      << "% of the band's cells reach"
+      << " min_radius " << min_radius << " rings: most of the surface lies within "
+      << min_radius << " cells of a feature at resolution " << resolution
+      << ", so small faces and close edges merge or vanish; raise the resolution";
+    run.warnings.push_back(w.str());
+  }
+  if (repair_share > kMaxRepairShare) {
+    std::ostringstream r;
+    r << "the band has holes: " << band.repairCellCount() << " of " << band.size()
+      << " cells were added to close it (the points are sparser than the cells)";
+    if (run.fill == SurfaceFill::kPoints)
+      r << "; fill the band between the points (fill 'triangles') or lower the "
+           "resolution";
+    else
+      r << "; lower the resolution";
+    run.warnings.push_back(r.str());
+  }
 }
 
 template <typename PointInT, typename PointOutT>
@@ -345,7 +515,13 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::computeFeature(PointCloudOut& 
       graph_ = std::move(results.graph);
       times_ = run.times;
       resolution_estimate_ = std::move(run.resolution);
+      fill_used_ = run.fill;
+      fill_reason_ = std::move(run.fill_reason);
       notes_ = std::move(run.notes);
+      warnings_ = std::move(run.warnings);
+      for (const std::string& warning : warnings_)
+        PCL_WARN("[visfeat::%s::compute] %s\n", getClassName().c_str(),
+                 warning.c_str());
       return;
     } catch (const Error& e) {
       problem = e.what();

@@ -75,7 +75,8 @@ template <typename PointT>
 VoxelBand
 buildVoxelBand(const pcl::PointCloud<PointT>& cloud,
                const GridSpec& grid,
-               const VoxelBand::Options& options)
+               const VoxelBand::Options& options,
+               const std::vector<CellCoord>& fill)
 {
   {
     pcl::octree::OctreePointCloudPointVector<PointT> probe(grid.cell_size);
@@ -175,9 +176,9 @@ buildVoxelBand(const pcl::PointCloud<PointT>& cloud,
     occupied.insert(occupied.end(), slab_cells[s].begin(), slab_cells[s].end());
     slab_cells[s] = {};
   }
-  if (occupied.empty())
+  if (occupied.empty() && fill.empty())
     throw Error("the cloud has no finite point");
-  return VoxelBand::build(grid, std::move(occupied), point_occupied, options);
+  return VoxelBand::build(grid, std::move(occupied), point_occupied, options, fill);
 }
 
 } // namespace visfeat
@@ -186,4 +187,4 @@ buildVoxelBand(const pcl::PointCloud<PointT>& cloud,
   template visfeat::GridSpec visfeat::gridForCloud<T>(const pcl::PointCloud<T>&, int); \
   template visfeat::VoxelBand visfeat::buildVoxelBand<T>(                              \
     const pcl::PointCloud<T>&, const visfeat::GridSpec&,                               \
-    const visfeat::VoxelBand::Options&);
+    const visfeat::VoxelBand::Options&, const std::vector<visfeat::CellCoord>&);

@@ -172,25 +172,63 @@ private:
   CellIndex index_;
 };
 
+/** Appends the cells of fill that no entry of occupied holds, without points; returns
+ * how many. */
+std::size_t
+addFillCells(const GridSpec& grid,
+             const std::vector<CellCoord>& fill,
+             std::vector<OccupiedCell>& occupied)
+{
+  if (fill.empty())
+    return 0;
+  std::vector<std::uint64_t> held(occupied.size());
+  for (std::size_t i = 0; i < occupied.size(); ++i)
+    held[i] = grid.linearKey(occupied[i].coord);
+  std::sort(held.begin(), held.end());
+  std::vector<std::pair<std::uint64_t, std::size_t>> keyed(fill.size());
+  for (std::size_t i = 0; i < fill.size(); ++i)
+    keyed[i] = {grid.linearKey(fill[i]), i};
+  std::sort(keyed.begin(), keyed.end());
+  const std::size_t before = occupied.size();
+  for (std::size_t i = 0; i < keyed.size(); ++i) {
+    if (i > 0 && keyed[i].first == keyed[i - 1].first)
+      continue;
+    if (std::binary_search(held.begin(), held.end(), keyed[i].first))
+      continue;
+    OccupiedCell cell;
+    cell.coord = fill[keyed[i].second];
+    occupied.push_back(cell);
+  }
+  return occupied.size() - before;
+}
+
 } // namespace
 
 VoxelBand
 VoxelBand::build(const GridSpec& grid,
                  std::vector<OccupiedCell> occupied,
                  const std::vector<std::int32_t>& point_occupied,
-                 const Options& options)
+                 const Options& options,
+                 const std::vector<CellCoord>& fill)
 {
-  if (occupied.empty())
+  if (occupied.empty() && fill.empty())
     throw Error("the band is empty: no cell holds a finite point");
   if ((grid.dims.array() <= 0).any())
     throw Error("the grid has no cells");
-  for (const OccupiedCell& cell : occupied)
-    if (!grid.contains(cell.coord)) {
+  auto check = [&grid](const CellCoord& c) {
+    if (!grid.contains(c)) {
       std::ostringstream msg;
-      msg << "cell (" << cell.coord.transpose() << ") lies outside the grid of "
+      msg << "cell (" << c.transpose() << ") lies outside the grid of "
           << grid.dims.transpose() << " cells";
       throw Error(msg.str());
     }
+  };
+  for (const OccupiedCell& cell : occupied)
+    check(cell.coord);
+  for (const CellCoord& c : fill)
+    check(c);
+  const std::size_t entries = occupied.size();
+  const std::size_t fill_cells = addFillCells(grid, fill, occupied);
 
   // Number the occupied cells by linear key; remember where each input entry went.
   const std::vector<std::size_t> order = sortedByKey(
@@ -211,12 +249,13 @@ VoxelBand::build(const GridSpec& grid,
 
   VoxelBand band;
   band.grid_ = grid;
+  band.fill_cells_ = fill_cells;
   if (options.repair)
     band.repair_cells_ = BandRepair(grid, coords, counts, sums).run();
   band.finalize(std::move(coords), std::move(counts), options.threads);
 
   for (const std::int32_t entry : point_occupied)
-    if (entry >= 0 && static_cast<std::size_t>(entry) >= occupied.size())
+    if (entry >= 0 && static_cast<std::size_t>(entry) >= entries)
       throw Error("a point refers to an occupied cell that does not exist");
   // The final id of every occupied entry once, then of every point through its entry.
   std::vector<CellId> entry_cell(occupied.size());

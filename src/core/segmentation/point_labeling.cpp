@@ -65,15 +65,16 @@ PointLabeling::PointLabeling(const VoxelBand& band,
                   " exceeds the " + std::to_string(classes_.size()) + " regions");
   if (distance_ <= 0.0 || skeleton_.empty())
     return;
+  reach_ = std::max(kSkeletonReach, static_cast<int>(std::ceil(distance_)));
   // Only points of cells within kSkeletonReach of a skeleton cell can change label.
   near_skeleton_.assign(skeleton_.size(), 0);
   for (std::size_t c = 0; c < skeleton_.size(); ++c) {
     if (!skeleton_[c])
       continue;
     const CellCoord at = band.coord(static_cast<CellId>(c));
-    for (int dz = -kSkeletonReach; dz <= kSkeletonReach; ++dz)
-      for (int dy = -kSkeletonReach; dy <= kSkeletonReach; ++dy)
-        for (int dx = -kSkeletonReach; dx <= kSkeletonReach; ++dx) {
+    for (int dz = -reach_; dz <= reach_; ++dz)
+      for (int dy = -reach_; dy <= reach_; ++dy)
+        for (int dx = -reach_; dx <= reach_; ++dx) {
           const CellId n = band.find(at + CellCoord(dx, dy, dz));
           if (n != kNoCell)
             near_skeleton_[static_cast<std::size_t>(n)] = 1;
@@ -99,9 +100,9 @@ PointLabeling::labelOf(const Eigen::Vector3d& q, CellId cell) const
   CellId nearest_vertex = kNoCell;
   double near_face = std::numeric_limits<double>::infinity();
   std::uint32_t face = 0;
-  for (int dz = -kSkeletonReach; dz <= kSkeletonReach; ++dz)
-    for (int dy = -kSkeletonReach; dy <= kSkeletonReach; ++dy)
-      for (int dx = -kSkeletonReach; dx <= kSkeletonReach; ++dx) {
+  for (int dz = -reach_; dz <= reach_; ++dz)
+    for (int dy = -reach_; dy <= reach_; ++dy)
+      for (int dx = -reach_; dx <= reach_; ++dx) {
         const CellId n = band_.find(c + CellCoord(dx, dy, dz));
         if (n == kNoCell)
           continue;

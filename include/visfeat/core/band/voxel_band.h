@@ -62,13 +62,18 @@ public:
    * \param[in] point_occupied per input point, its entry in occupied (-1 = skipped,
    *            e.g. NaN); stored as pointCell() after renumbering
    * \param[in] options see Options
-   * \throws visfeat::Error when occupied is empty, holds duplicates, or a coordinate
-   *         lies outside the grid.
+   * \param[in] fill cells of the surface between the points (a rasterised mesh or
+   *            local triangles, see triangle_cells.h): those not in occupied join the
+   *            band without points (fillCellCount()), before the repair; any order,
+   *            duplicates allowed, every coordinate inside the grid
+   * \throws visfeat::Error when occupied and fill are both empty, occupied holds
+   *         duplicates, or a coordinate lies outside the grid.
    */
   static VoxelBand build(const GridSpec& grid,
                          std::vector<OccupiedCell> occupied,
                          const std::vector<std::int32_t>& point_occupied,
-                         const Options& options);
+                         const Options& options,
+                         const std::vector<CellCoord>& fill = {});
 
   /** \brief Same, from bare cell coordinates (one point each, at the centre). */
   static VoxelBand fromCells(const GridSpec& grid,
@@ -108,6 +113,8 @@ public:
 
   /** \brief Cells added by the repair step. */
   std::size_t repairCellCount() const { return repair_cells_; }
+  /** \brief Cells that came from the fill (build()'s `fill`) and hold no point. */
+  std::size_t fillCellCount() const { return fill_cells_; }
 
   /** \brief Bytes held by the band (cells, neighbours, index, point map). */
   std::uint64_t memoryBytes() const;
@@ -128,6 +135,7 @@ private:
   std::vector<CellId> point_cell_;
   CellIndex index_;
   std::size_t repair_cells_ = 0;
+  std::size_t fill_cells_ = 0;
 };
 
 } // namespace visfeat

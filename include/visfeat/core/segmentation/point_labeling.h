@@ -26,10 +26,10 @@ struct PointLabel
  * Cells are coarser than the points, and the cores of obtuse edges are several cells
  * wide, so a point does not simply take its cell's label. With
  * point_feature_distance d > 0 and the segmentation's skeleton (complete regions):
- *  1. Only points whose cell lies within 2 cells (Chebyshev distance <= 2: the 5x5x5
- *     block of cells around it) of a skeleton cell are examined; every other point
- *     takes its cell's label and class.
- *  2. Each skeleton cell s in the 5x5x5 block around the point's cell stands for a
+ *  1. Only points whose cell lies within reach() = max(2, ceil(d)) cells (Chebyshev:
+ *     the 5x5x5 block of cells around it for d <= 2) of a skeleton cell are examined;
+ *     every other point takes its cell's label and class.
+ *  2. Each skeleton cell s in that block around the point's cell stands for a
  *     piece of its middle line: the segment through skeletonCentres()[s] along
  *     skeletonTangents()[s], kHalfPiece (1.5) cells each way (a zero tangent makes it
  *     the centre alone). The point's distance to each piece is measured, in cells.
@@ -40,8 +40,8 @@ struct PointLabel
  *  4. Otherwise a point whose cell is an edge or vertex cell goes to the face cell
  *     whose centre is nearest to it among the 3x3x3 block around its cell (26
  *     neighbours and itself); with no face cell there it keeps its cell's label.
- * Ties keep the first cell in z, y, x scan order (dz, dy, dx from -2 to 2). With d = 0
- * or without a skeleton, every point takes its cell's label and class.
+ * Ties keep the first cell in z, y, x scan order (dz, dy, dx from -reach to reach).
+ * With d = 0 or without a skeleton, every point takes its cell's label and class.
  *
  * The object keeps references to the band and the segmentation (or the arrays): they
  * must outlive it.
@@ -53,7 +53,8 @@ public:
    * in a gap of up to 3 cells between skeleton cells (noise thins the ridge) still
    * find the line. */
   static constexpr double kHalfPiece = 1.5;
-  /** \brief Reach of the skeleton search around a point's cell (Chebyshev, cells). */
+  /** \brief Least reach of the skeleton search around a point's cell (Chebyshev,
+   * cells); reach() is larger for a point_feature_distance above it. */
   static constexpr int kSkeletonReach = 2;
   /** \brief Reach of the face search around a point's cell (Chebyshev, cells). */
   static constexpr int kFaceReach = 1;
@@ -94,7 +95,10 @@ public:
    *            VoxelBand::pointCell()); kNoCell gives label 0, class none. */
   PointLabel labelOf(const Eigen::Vector3d& q, CellId cell) const;
 
-  /** \brief Per cell, 1 when a skeleton cell lies within kSkeletonReach cells (empty
+  /** \brief Reach of the skeleton search: max(kSkeletonReach, ceil(d)) cells. */
+  int reach() const { return reach_; }
+
+  /** \brief Per cell, 1 when a skeleton cell lies within reach() cells (empty
    * when point_feature_distance is 0 or there is no skeleton). */
   const std::vector<char>& nearSkeleton() const { return near_skeleton_; }
 
@@ -106,6 +110,7 @@ private:
   }
 
   const VoxelBand& band_;
+  int reach_ = kSkeletonReach;
   const std::vector<std::uint32_t>& labels_;
   std::vector<FeatureClass> classes_;
   const std::vector<char>& skeleton_;

@@ -1,0 +1,60 @@
+#pragma once
+
+#include <visfeat/core/grid/grid_spec.h>
+
+#include <Eigen/Core>
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace visfeat {
+
+/** \brief Whether triangle (a, b, c) and cell `cell` overlap (all in cell units: cell
+ * (i, j, k) is the box [i, i + 1) x [j, j + 1) x [k, k + 1)).
+ *
+ * The separating-axis test of Akenine-Moller ("Fast 3D triangle-box overlap testing",
+ * 2001): the 3 box axes, the triangle's normal and the 9 cross products of edges and
+ * axes. Exact up to rounding; a triangle lying exactly on the plane between two cells
+ * touches the upper one only (the box's upper faces are moved in by kUpperFaceInset),
+ * so a plane at a cell boundary gives one layer of cells, as points on it would.
+ * Degenerate triangles (segments, points) are handled. */
+bool triangleTouchesCell(const Eigen::Vector3d& a,
+                         const Eigen::Vector3d& b,
+                         const Eigen::Vector3d& c,
+                         const CellCoord& cell,
+                         double inset = 0.0);
+
+/** \brief How far the upper faces of a cell's box are moved in for
+ * triangleTouchesCell (cell units). */
+constexpr double kUpperFaceInset = 1e-9;
+
+/** \brief Appends the cells of a grid of `dims` cells that triangle (a, b, c) (cell
+ * units) touches (triangleTouchesCell); cells outside the grid are left out. */
+void appendTriangleCells(const Eigen::Vector3d& a,
+                         const Eigen::Vector3d& b,
+                         const Eigen::Vector3d& c,
+                         const Eigen::Vector3i& dims,
+                         std::vector<CellCoord>& out,
+                         double inset = 0.0);
+
+/** \brief A triangle as three indices into a vertex array. */
+using TriangleIndices = std::array<std::uint32_t, 3>;
+
+/** \brief The cells of `grid` touched by a triangle soup: the exact rasterisation of
+ * DESIGN.md's "band from the surface".
+ *
+ * \param[in] grid the grid
+ * \param[in] vertices positions in world units
+ * \param[in] triangles indices into vertices
+ * \param[in] threads 0 = all available; the result does not depend on it
+ * \return the cells, each once, in GridSpec::linearKey order. Triangles or parts of
+ * them outside the grid add nothing.
+ * \throws visfeat::Error for an index out of range or a non-finite vertex. */
+std::vector<CellCoord> rasterizeTriangles(const GridSpec& grid,
+                                          const std::vector<Eigen::Vector3d>& vertices,
+                                          const std::vector<TriangleIndices>& triangles,
+                                          int threads,
+                                          double inset = 0.0);
+
+} // namespace visfeat

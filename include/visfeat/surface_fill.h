@@ -1,0 +1,84 @@
+#pragma once
+
+#include <visfeat/core/band/local_triangles.h>
+#include <visfeat/core/band/triangle_cells.h>
+#include <visfeat/core/grid/grid_spec.h>
+
+#include <pcl/point_cloud.h>
+
+#include <string>
+#include <vector>
+
+namespace visfeat {
+
+/** \brief Where the band's cells come from (DESIGN.md: the band from the surface).
+ *
+ * - kPoints: the cells that hold a point (the paper's band; right for clouds with at
+ *   least about one point per cell length).
+ * - kLocalTriangles: those cells plus the cells of the umbrella triangles between each
+ *   point and its neighbours (umbrellaTriangles()), for clouds sparser than the cells.
+ * - kMesh: the cells of the input mesh's triangles, rasterised exactly
+ *   (rasterizeTriangles()), plus the cells of the points.
+ * - kAuto: kMesh when a mesh is given, else kLocalTriangles when the cloud has fewer
+ *   than about one point per cell length (its spacing above kFillSpacingCells cells),
+ *   else kPoints. */
+enum class SurfaceFill
+{
+  kAuto,
+  kPoints,
+  kLocalTriangles,
+  kMesh,
+};
+
+/** \brief "auto", "points", "triangles", "mesh". */
+const char* surfaceFillName(SurfaceFill fill);
+
+/** \brief The fill named by surfaceFillName(); false for another name. */
+bool parseSurfaceFill(const std::string& name, SurfaceFill& fill);
+
+/** \brief kAuto fills between the points when their mean spacing exceeds this many
+ * cells: at the automatic resolution (2 spacings per cell, ResolutionEstimate) a cloud
+ * is never filled, so dense clouds keep the paper's band. */
+constexpr double kFillSpacingCells = 1.0;
+
+/** \brief The automatic resolution is raised to this when a fill lets the cells be
+ * finer than the points: at 256 cells the generated models' features (faces >= 1/8 of
+ * the part, 2 min_radius = 32 cells apart) separate exactly. */
+constexpr int kTopologyResolution = 256;
+
+/** \brief Cells a point spacing the local-triangle fill is trusted with (the
+ * automatic resolution stays at or below extent / spacing times this): the fill
+ * rounds creases by about a spacing, which must stay well below 2 min_radius cells. */
+constexpr double kMaxFillCellsPerSpacing = 4.0;
+
+/** \brief With a given resolution R, the spacing (which decides the automatic fill) is
+ * measured only for clouds of fewer than this many points per R^2: denser ones have a
+ * point per cell on any surface of area below this many times extent^2, and are
+ * spared the k-d tree. */
+constexpr double kFillCheckPointsPerCell2 = 4.0;
+
+/** \brief compute() warns when fewer of the band's cells than this reach min_radius
+ * (the face cores): measured 0.3-0.6 on the generated models at 256 cells, 0.11 on a
+ * 20,000-point cube at the 48 cells its density alone allows (1 face of 6 found). */
+constexpr double kMinCoreShare = 0.15;
+
+/** \brief compute() warns when more of the band's cells than this were added by the
+ * repair (a band full of holes): 0.13 on the dense generated models. */
+constexpr double kMaxRepairShare = 0.3;
+
+/** \brief The cells of the umbrella triangles of a cloud's finite points
+ * (umbrellaTriangles() with neighbours from pcl::search::KdTree), rasterised on grid.
+ * \param[out] triangles if not null, the number of triangles made
+ * \throws visfeat::Error for bad parameters. */
+template <typename PointT>
+std::vector<CellCoord> localTriangleCells(const pcl::PointCloud<PointT>& cloud,
+                                          const GridSpec& grid,
+                                          const LocalTriangleParameters& parameters,
+                                          int threads,
+                                          std::size_t* triangles = nullptr);
+
+} // namespace visfeat
+
+#ifdef PCL_NO_PRECOMPILE
+#include <visfeat/impl/surface_fill.hpp>
+#endif
