@@ -58,5 +58,10 @@ set(VISFEAT_BAD_INPUT_CASES
   "generate_bad_spacing|-spacing must be in&&got -1"
   "generate_truth_not_json|must have the extension .json"
   "generate_truth_dir_missing|does not exist"
-  "generate_truth_no_value|option -truth needs a value")
+  "generate_truth_no_value|option -truth needs a value"
+  "generate_mesh_not_ply|must have the extension .ply (with -mesh)"
+  "generate_mesh_and_organized|give -mesh or -organized, not both"
+  "generate_organized_bad_size|-organized expects WIDTHxHEIGHT&&got '64by48'"
+  "generate_view_zero|-view expects a non-zero direction X,Y,Z, got '0,0,0'"
+  "generate_dense_face_out_of_range|-dense_face 6 is not a face of 'cube' (0 to 5)")
 

@@ -2,7 +2,8 @@
 #   cmake -DVISFEAT=<visfeat> -DGENERATE=<visfeat_generate> -DWORK_DIR=<dir> -P smoke_test.cmake
 # 1. visfeat_generate cube -> visfeat -voxels: exit codes, PCD headers (fields, POINTS);
 #    -paper_noise: opacity 3 on the summary line and in the graph JSON;
-#    every CAD model of visfeat_generate with its -truth JSON (counts).
+#    every CAD model of visfeat_generate with its -truth JSON (counts); a -mesh PLY
+#    and an -organized view (headers).
 # 2. .ply input (double coordinates, upper-case extension) and an input that already has
 #    a label field.
 # Bad inputs have a ctest each (bad_input_test.cmake); graphs, meshes and the automatic
@@ -150,6 +151,33 @@ foreach(entry IN LISTS models)
     endif()
   endif()
 endforeach()
+
+# visfeat_generate -mesh: a binary PLY mesh of the model; -organized: an organized PCD
+# of W x H points with the generated fields.
+set(mesh_ply "${WORK_DIR}/box_with_hole_mesh.ply")
+expect_success(generate_mesh "${GENERATE}" box_with_hole "${mesh_ply}" -mesh -resolution 32
+               -seed 5)
+if(EXISTS "${mesh_ply}")
+  file(READ "${mesh_ply}" mesh_head LIMIT 400)
+  if(NOT mesh_head MATCHES "format binary_little_endian" OR
+     NOT mesh_head MATCHES "element vertex [1-9]" OR NOT mesh_head MATCHES "element face [1-9]")
+    report_failure("${mesh_ply}: not a binary PLY mesh with vertices and faces")
+  else()
+    message(STATUS "ok: ${mesh_ply}")
+  endif()
+else()
+  report_failure("${mesh_ply} was not written")
+endif()
+set(view_pcd "${WORK_DIR}/cube_view.pcd")
+expect_success(generate_view "${GENERATE}" cube "${view_pcd}" -organized 64x48
+               -baseline 0.2 -noise_a 0.001 -noise_b 0.001)
+expect_header("${view_pcd}" "${generated_fields}" 3072)
+if(EXISTS "${view_pcd}")
+  file(READ "${view_pcd}" view_head LIMIT 400)
+  if(NOT view_head MATCHES "\nWIDTH 64\n" OR NOT view_head MATCHES "\nHEIGHT 48\n")
+    report_failure("${view_pcd}: not organized as 64 x 48")
+  endif()
+endif()
 
 # --- 2. PLY input, existing label field ------------------------------------------
 # 150 points on the faces of the cube [0,4]^3 (5x5 per face).

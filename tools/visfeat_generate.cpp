@@ -1,11 +1,15 @@
 // visfeat_generate: a point cloud sampled from a synthetic CAD model (a polyhedron, a
 // box with a hole, a cylinder) under a random rotation, with its ground truth: per
 // point the distance to the nearest true sharp curve and the face it was sampled from;
-// and, on request, the model's vertices, edges, faces and incidences as JSON.
+// and, on request, the model's vertices, edges, faces and incidences as JSON. Instead
+// of the cloud: the model's tessellation as a PLY mesh (-mesh), or an organized depth
+// view as a structured-light or time-of-flight camera takes it (-organized).
 
 #include "common/arguments.h"
 #include "common/output_files.h"
 #include "common/tool_main.h"
+#include "generate_views.h"
+#include "generated_point.h"
 
 #include <support/cad_models.h>
 #include <support/synthetic_shapes.h>
@@ -17,8 +21,6 @@
 #include <pcl/console/print.h>
 #include <pcl/console/time.h>
 #include <pcl/io/pcd_io.h>
-#include <pcl/point_types.h>
-#include <pcl/register_point_struct.h>
 
 #include <cstdint>
 #include <filesystem>
@@ -27,27 +29,6 @@
 #include <new>
 #include <string>
 #include <system_error>
-
-namespace visfeat_tools {
-
-/** \brief A generated point: x y z, the distance of its noise-free position to the
- * nearest true sharp curve (world units) and the id of the face it was sampled from. */
-struct EIGEN_ALIGN16 PointGenerated
-{
-  PCL_ADD_POINT4D;
-  float curve_distance;
-  std::uint32_t face_id;
-
-  PCL_MAKE_ALIGNED_OPERATOR_NEW
-};
-
-} // namespace visfeat_tools
-
-POINT_CLOUD_REGISTER_POINT_STRUCT(visfeat_tools::PointGenerated,
-                                  (float, x, x)(float, y, y)(float, z, z)(
-                                    float,
-                                    curve_distance,
-                                    curve_distance)(std::uint32_t, face_id, face_id))
 
 using namespace pcl::console;
 namespace vt = visfeat_tools;
@@ -62,6 +43,9 @@ constexpr double kDefaultSpacing = 0.5;
 constexpr long long kDefaultSeed = 1;
 constexpr double kDefaultNoise = 0.0;
 constexpr long long kMaxPoints = 2000000000LL;
+constexpr double kDefaultDensityRatio = 1.0;
+constexpr double kDefaultChord = 0.05;
+constexpr double kDefaultFov = 60.0;
 
 std::string
 modelList()
@@ -75,7 +59,7 @@ modelList()
 void
 printHelp(const char* program)
 {
-  print_error("Syntax is: %s <model> output.pcd <options>\n", program);
+  print_error("Syntax is: %s <model> output.pcd|output.ply <options>\n", program);
   print_info(
     "  Samples points uniformly (by area) over the surface of a synthetic CAD model\n"
     "  under a random rotation and writes them as binary PCD with the fields\n"
@@ -99,9 +83,57 @@ printHelp(const char* program)
   print_info("    -noise SIGMA  = Gaussian noise per coordinate (default: ");
   print_value("%g", kDefaultNoise);
   print_info(" cells)\n");
+  print_info("    -density_ratio K = face -dense_face gets K times as many points per "
+             "area as\n"
+             "                    the others, the total unchanged (default: ");
+  print_value("%g", kDefaultDensityRatio);
+  print_info(")\n");
+  print_info("    -dense_face F = the face of -density_ratio (default: ");
+  print_value("0");
+  print_info(")\n");
   print_info(
     "    -truth F.json = also write the rotated model's truth: vertices, edges\n"
     "                    (straight or circle), faces, incidences, counts\n");
+  print_info(
+    "    -mesh         = write the rotated model's tessellation as a binary PLY mesh\n"
+    "                    (output.ply) instead: watertight, counter-clockwise seen "
+    "from\n"
+    "                    outside, the same rotation as the cloud of the same seed\n");
+  print_info(
+    "    -chord T      = with -mesh: largest distance between a circle and its "
+    "polygon\n"
+    "                    (default: ");
+  print_value("%g", kDefaultChord);
+  print_info(" cells)\n");
+  print_info(
+    "    -organized WxH = write one organized depth view (output.pcd, W x H pixels,\n"
+    "                    row-major, the same fields; an empty pixel has NaN x y z and\n"
+    "                    curve_distance and face_id 4294967295) instead, ray cast on\n"
+    "                    the exact faces; the points are in the model's frame\n");
+  print_info(
+    "    -fov DEG      = with -organized: horizontal field of view (default: ");
+  print_value("%g", kDefaultFov);
+  print_info(" degrees)\n");
+  print_info(
+    "    -view X,Y,Z   = with -organized: direction from the model's centre to the\n"
+    "                    camera, in the model's frame before the seed's rotation (the\n"
+    "                    camera turns with the model; default: ");
+  print_value("1,1,1");
+  print_info(", a corner)\n");
+  print_info("    -distance D   = with -organized: camera distance from the centre "
+             "(default:\n"
+             "                    the model fills 90%% of the view; world units)\n");
+  print_info("    -baseline B   = with -organized: projector offset along image x; "
+             "pixels it\n"
+             "                    does not light are empty (default: ");
+  print_value("0");
+  print_info(", no shadows; world units)\n");
+  print_info(
+    "    -noise_a A -noise_b B = with -organized: depth noise along the ray of "
+    "sigma\n"
+    "                    A + B depth^2 (default: ");
+  print_value("0 0");
+  print_info("; world units)\n");
   print_info("    -q            = quiet: errors only\n");
   print_info(
     "  A cell is the longest bounding-box side of the rotated model / resolution.\n");
@@ -141,7 +173,79 @@ struct Options
   long long points = 0; // 0 = from the spacing
   long long seed = kDefaultSeed;
   double noise = kDefaultNoise;
+  double density_ratio = kDefaultDensityRatio;
+  int dense_face = 0;
+  bool mesh = false;
+  double chord = kDefaultChord; // cells
+  bool organized = false;
+  syn::OrganizedViewOptions view; // camera in the model's frame before the rotation
 };
+
+/** \brief Warn about the options that have no effect with the chosen product. */
+void
+warnUnused(const vt::Arguments& args, const Options& opt)
+{
+  const bool cloud = !opt.mesh && !opt.organized;
+  const char* product = opt.mesh ? "-mesh" : "-organized";
+  if (!cloud)
+    for (const char* o :
+         {"-spacing", "-points", "-noise", "-density_ratio", "-dense_face"})
+      if (args.has(o))
+        print_warn("%s is ignored with %s\n", o, product);
+  if (!opt.mesh && args.has("-chord"))
+    print_warn("-chord is ignored without -mesh\n");
+  if (!opt.organized)
+    for (const char* o :
+         {"-fov", "-view", "-distance", "-baseline", "-noise_a", "-noise_b"})
+      if (args.has(o))
+        print_warn("%s is ignored without -organized\n", o);
+  if (cloud && args.has("-points") && args.has("-spacing"))
+    print_warn("-points given: -spacing is ignored\n");
+  if (cloud && args.has("-dense_face") && !args.has("-density_ratio"))
+    print_warn("-dense_face has no effect without -density_ratio\n");
+}
+
+/** \brief Read the options of -mesh, -organized and -density_ratio. */
+bool
+readProductOptions(const vt::Arguments& args, Options& opt, std::string& error)
+{
+  opt.mesh = args.has("-mesh");
+  opt.organized = args.has("-organized");
+  if (opt.mesh && opt.organized) {
+    error = "give -mesh or -organized, not both";
+    return false;
+  }
+  if (opt.organized && !vt::parseImageSize(args.value("-organized"), opt.view.width,
+                                           opt.view.height, error))
+    return false;
+  if (args.has("-view") &&
+      !vt::parseDirection(args.value("-view"), opt.view.camera_direction, error))
+    return false;
+  if (!args.getReal("-density_ratio", 1e-3, 1e3, opt.density_ratio, error) ||
+      !args.getInteger("-dense_face", 0, std::numeric_limits<int>::max(),
+                       opt.dense_face, error) ||
+      !args.getReal("-chord", 1e-6, 1e3, opt.chord, error) ||
+      !args.getReal("-fov", 1.0, 179.0, opt.view.horizontal_fov, error) ||
+      !args.getReal("-distance", 0.0, 1e6, opt.view.distance, error) ||
+      !args.getReal("-baseline", -1e6, 1e6, opt.view.baseline, error) ||
+      !args.getReal("-noise_a", 0.0, 1e6, opt.view.noise_a, error) ||
+      !args.getReal("-noise_b", 0.0, 1e6, opt.view.noise_b, error))
+    return false;
+  const auto faces = syn::cadModelByName(opt.name).faces.size();
+  if (opt.dense_face >= static_cast<int>(faces)) {
+    error = "-dense_face " + std::to_string(opt.dense_face) + " is not a face of '" +
+            opt.name + "' (0 to " + std::to_string(faces - 1) + ")";
+    return false;
+  }
+  const std::string extension = opt.mesh ? ".ply" : ".pcd";
+  if (vt::lowerExtension(opt.output) != extension) {
+    error = "output '" + opt.output + "' must have the extension " + extension +
+            (opt.mesh ? " (with -mesh)" : "");
+    return false;
+  }
+  warnUnused(args, opt);
+  return true;
+}
 
 /** \brief Read and check the options, the model name and the outputs (the right
  * extensions, writable, distinct) before any work. */
@@ -149,7 +253,7 @@ bool
 readOptions(const vt::Arguments& args, Options& opt, std::string& error)
 {
   if (args.positional().size() != 2) {
-    error = "expected a model and an output .pcd, got " +
+    error = "expected a model and an output .pcd or .ply, got " +
             std::to_string(args.positional().size()) + " argument(s) (see -h)";
     return false;
   }
@@ -164,8 +268,6 @@ readOptions(const vt::Arguments& args, Options& opt, std::string& error)
                        error) ||
       !args.getReal("-noise", 0.0, 1e6, opt.noise, error))
     return false;
-  if (args.has("-points") && args.has("-spacing"))
-    print_warn("-points given: -spacing is ignored\n");
   if (args.has("-truth") && opt.truth.empty()) {
     error = "-truth expects a file name";
     return false;
@@ -177,10 +279,8 @@ readOptions(const vt::Arguments& args, Options& opt, std::string& error)
     error = "unknown model '" + opt.name + "' (known: " + modelList() + ")";
     return false;
   }
-  if (vt::lowerExtension(opt.output) != ".pcd") {
-    error = "output '" + opt.output + "' must have the extension .pcd";
+  if (!readProductOptions(args, opt, error))
     return false;
-  }
   if (!vt::checkWritable(opt.output, error))
     return false;
   if (opt.truth.empty())
@@ -196,20 +296,18 @@ readOptions(const vt::Arguments& args, Options& opt, std::string& error)
   return vt::checkWritable(opt.truth, error);
 }
 
-/** \brief The model under its random rotation, sampled into `cloud`, printing what
- * was generated. */
+/** \brief The rotated model sampled into `cloud`, printing what was generated. */
 bool
-generate(const Options& opt,
-         syn::CadModel& model,
-         pcl::PointCloud<vt::PointGenerated>& cloud,
-         std::string& error)
+generateCloud(const Options& opt,
+              const syn::CadModel& model,
+              pcl::PointCloud<vt::PointGenerated>& cloud,
+              std::string& error)
 {
   TicToc tt;
   tt.tic();
   print_highlight("Generating ");
   print_value("%s ", opt.name.c_str());
   const std::uint64_t seed64 = static_cast<std::uint64_t>(opt.seed);
-  model = syn::rotated(syn::cadModelByName(opt.name), syn::randomRotation(seed64));
   const double cell = syn::cellSize(model, opt.resolution);
   const std::size_t count =
     opt.points > 0 ? static_cast<std::size_t>(opt.points)
@@ -233,6 +331,8 @@ generate(const Options& opt,
   options.count = count;
   options.seed = seed64;
   options.noise_sigma = opt.noise * cell;
+  if (opt.density_ratio != 1.0)
+    options.face_density = syn::denseFace(model, opt.dense_face, opt.density_ratio);
   const syn::CadSamples samples = syn::sampleCadModel(model, options);
 
   cloud.resize(samples.points.size());
@@ -265,7 +365,14 @@ generate(const Options& opt,
   }
   print_info(", noise ");
   print_value("%g", opt.noise);
-  print_info(" cells, seed ");
+  print_info(" cells");
+  if (opt.density_ratio != 1.0) {
+    print_info(", face ");
+    print_value("%d", opt.dense_face);
+    print_info(" denser by ");
+    print_value("%g", opt.density_ratio);
+  }
+  print_info(", seed ");
   print_value("%lld", opt.seed);
   print_info("]\n");
   return true;
@@ -293,12 +400,86 @@ printTruth(const syn::CadModel& model)
   print_info("\n");
 }
 
-/** \brief Write the cloud and the truth under temporary names and rename them only
- * when both are complete, so a failure leaves neither. */
+/** \brief The rotated model's tessellation, printing what was generated. */
+pcl::PolygonMesh
+generateMesh(const Options& opt, const syn::CadModel& model)
+{
+  TicToc tt;
+  tt.tic();
+  print_highlight("Tessellating ");
+  print_value("%s ", opt.name.c_str());
+  const double cell = syn::cellSize(model, opt.resolution);
+  const syn::CadMesh mesh = syn::tessellateCadModel(model, opt.chord * cell);
+  pcl::PolygonMesh out = vt::toPolygonMesh(mesh);
+  print_info("[done, ");
+  print_value("%g", tt.toc());
+  print_info(" ms : ");
+  print_value("%zu", mesh.mesh.vertices.size());
+  print_info(" vertices, ");
+  print_value("%zu", mesh.mesh.triangles.size());
+  print_info(" triangles; resolution ");
+  print_value("%d", opt.resolution);
+  print_info(", cell ");
+  print_value("%g", cell);
+  print_info(", chord ");
+  print_value("%g", opt.chord);
+  print_info(" cells, seed ");
+  print_value("%lld", opt.seed);
+  print_info("]\n");
+  return out;
+}
+
+/** \brief One organized view of the rotated model, its camera turned with the model
+ * (`rotation`), into `cloud`, printing what was generated. */
+void
+generateView(const Options& opt,
+             const syn::CadModel& model,
+             const Eigen::Matrix3d& rotation,
+             pcl::PointCloud<vt::PointGenerated>& cloud)
+{
+  TicToc tt;
+  tt.tic();
+  print_highlight("Viewing ");
+  print_value("%s ", opt.name.c_str());
+  syn::OrganizedViewOptions view = opt.view;
+  view.camera_direction = rotation * opt.view.camera_direction.normalized();
+  view.up = rotation * opt.view.up;
+  view.seed = static_cast<std::uint64_t>(opt.seed);
+  visfeat::checkMemory(
+    static_cast<std::uint64_t>(view.width) * static_cast<std::uint64_t>(view.height) *
+      (sizeof(Eigen::Vector3f) + sizeof(int) + sizeof(double) +
+       sizeof(vt::PointGenerated) + 20),
+    0, std::to_string(view.width) + "x" + std::to_string(view.height) + " pixels");
+  const syn::OrganizedView result = syn::renderOrganizedView(model, view);
+  vt::toOrganizedCloud(result, cloud);
+  std::size_t hits = 0;
+  for (int f : result.face)
+    hits += f >= 0 ? 1 : 0;
+  print_info("[done, ");
+  print_value("%g", tt.toc());
+  print_info(" ms : ");
+  print_value("%dx%d", result.width, result.height);
+  print_info(" pixels, ");
+  print_value("%zu", hits);
+  print_info(" hits; camera at ");
+  print_value("%g", (result.camera_position - view.target).norm());
+  print_info(", baseline ");
+  print_value("%g", view.baseline);
+  print_info(", noise ");
+  print_value("%g + %g depth^2", view.noise_a, view.noise_b);
+  print_info(" world units, seed ");
+  print_value("%lld", opt.seed);
+  print_info("]\n");
+}
+
+/** \brief Write the product (`write_output`: to the temporary name of opt.output) and
+ * the truth under temporary names and rename them only when both are complete, so a
+ * failure leaves neither. */
+template <typename WriteOutput>
 bool
 writeOutputs(const Options& opt,
              const syn::CadModel& model,
-             const pcl::PointCloud<vt::PointGenerated>& cloud,
+             WriteOutput&& write_output,
              std::string& error)
 {
   TicToc tt;
@@ -307,13 +488,8 @@ writeOutputs(const Options& opt,
   print_value("%s ", opt.output.c_str());
   if (!opt.truth.empty())
     print_value("%s ", opt.truth.c_str());
-  pcl::PCDWriter writer;
-  const int rc = vt::quietly(
-    [&] { return writer.writeBinary(vt::temporaryPath(opt.output), cloud); });
-  if (rc < 0) {
-    vt::discardOutput(opt.output);
+  if (!write_output(error)) {
     print_info("\n");
-    error = "cannot write '" + opt.output + "' (disk full or not writable?)";
     return false;
   }
   if (!opt.truth.empty() && !writeTruth(opt.truth, model, error)) {
@@ -337,12 +513,31 @@ writeOutputs(const Options& opt,
   return true;
 }
 
+/** \brief Write a cloud as binary PCD to the temporary name of `path`. */
+bool
+writeCloud(const std::string& path,
+           const pcl::PointCloud<vt::PointGenerated>& cloud,
+           std::string& error)
+{
+  pcl::PCDWriter writer;
+  const int rc =
+    vt::quietly([&] { return writer.writeBinary(vt::temporaryPath(path), cloud); });
+  if (rc >= 0)
+    return true;
+  vt::discardOutput(path);
+  error = "cannot write '" + path + "' (disk full or not writable?)";
+  return false;
+}
+
 int
 run(int argc, char** argv)
 {
-  const vt::Arguments args(
-    argc, argv, {"-resolution", "-spacing", "-points", "-seed", "-noise", "-truth"},
-    {"-q", "-h", "--help"});
+  const vt::Arguments args(argc, argv,
+                           {"-resolution", "-spacing", "-points", "-seed", "-noise",
+                            "-truth", "-density_ratio", "-dense_face", "-chord",
+                            "-organized", "-fov", "-view", "-distance", "-baseline",
+                            "-noise_a", "-noise_b"},
+                           {"-q", "-h", "--help", "-mesh"});
   if (!args.ok())
     return fail(args.error());
   if (args.has("-q"))
@@ -351,12 +546,27 @@ run(int argc, char** argv)
   std::string error;
   if (!readOptions(args, opt, error))
     return fail(error);
-  syn::CadModel model;
+  const Eigen::Matrix3d rotation =
+    syn::randomRotation(static_cast<std::uint64_t>(opt.seed));
+  const syn::CadModel model = syn::rotated(syn::cadModelByName(opt.name), rotation);
+  if (opt.mesh) {
+    const pcl::PolygonMesh mesh = generateMesh(opt, model);
+    printTruth(model);
+    if (!writeOutputs(
+          opt, model,
+          [&](std::string& e) { return vt::writeMeshPly(opt.output, mesh, e); }, error))
+      return fail(error);
+    return 0;
+  }
   pcl::PointCloud<vt::PointGenerated> cloud;
-  if (!generate(opt, model, cloud, error))
+  if (opt.organized)
+    generateView(opt, model, rotation, cloud);
+  else if (!generateCloud(opt, model, cloud, error))
     return fail(error);
   printTruth(model);
-  if (!writeOutputs(opt, model, cloud, error))
+  if (!writeOutputs(
+        opt, model, [&](std::string& e) { return writeCloud(opt.output, cloud, e); },
+        error))
     return fail(error);
   return 0;
 }

@@ -53,6 +53,27 @@ cumulativeFaceAreas(const CadModel& model)
   return cumulative;
 }
 
+/** The faces' areas times their density multipliers, accumulated in face order. */
+std::vector<double>
+cumulativeFaceWeights(const CadModel& model, const std::vector<double>& density)
+{
+  if (density.size() != model.faces.size())
+    throw Error("sampleCadModel: face_density has " + std::to_string(density.size()) +
+                " values for " + std::to_string(model.faces.size()) + " faces");
+  std::vector<double> cumulative;
+  double total = 0.0;
+  for (std::size_t f = 0; f < model.faces.size(); ++f) {
+    if (!(density[f] >= 0.0) || !std::isfinite(density[f]))
+      throw Error("sampleCadModel: face_density[" + std::to_string(f) +
+                  "] must be finite and >= 0");
+    total += faceArea(model, static_cast<int>(f)) * density[f];
+    cumulative.push_back(total);
+  }
+  if (!(total > 0.0))
+    throw Error("sampleCadModel: face_density is zero on every face");
+  return cumulative;
+}
+
 /** options.count, or else the count of options.spacing over the total area. */
 std::size_t
 sampleCount(const SamplingOptions& options, double total)
@@ -88,15 +109,20 @@ public:
     }
   }
 
-  /** A face with probability proportional to its area. */
+  /** A face with probability proportional to its weight (its area, or its area times
+   * its density). */
   std::size_t pickFace(std::mt19937_64& rng) const
   {
     const double pick = unit_(rng) * cumulative_.back();
-    return std::min<std::size_t>(
+    std::size_t f = std::min<std::size_t>(
       static_cast<std::size_t>(
         std::lower_bound(cumulative_.begin(), cumulative_.end(), pick) -
         cumulative_.begin()),
       model_.faces.size() - 1);
+    // A pick of exactly 0 may land on leading faces of weight 0: skip them.
+    while (f + 1 < cumulative_.size() && !(cumulative_[f] > 0.0))
+      ++f;
+    return f;
   }
 
   /** A uniform point on face f: a cylinder by (angle, height), a planar face by
@@ -134,6 +160,20 @@ private:
 
 } // namespace
 
+std::vector<double>
+denseFace(const CadModel& model, int dense_face, double ratio)
+{
+  if (dense_face < 0 || dense_face >= static_cast<int>(model.faces.size()))
+    throw Error("denseFace: face " + std::to_string(dense_face) +
+                " is not a face of '" + model.name + "' (0 to " +
+                std::to_string(model.faces.size() - 1) + ")");
+  if (!(ratio > 0.0) || !std::isfinite(ratio))
+    throw Error("denseFace: the density ratio must be positive and finite");
+  std::vector<double> density(model.faces.size(), 1.0);
+  density[static_cast<std::size_t>(dense_face)] = ratio;
+  return density;
+}
+
 CadSamples
 sampleCadModel(const CadModel& model, const SamplingOptions& options)
 {
@@ -146,6 +186,8 @@ sampleCadModel(const CadModel& model, const SamplingOptions& options)
   if (!(total > 0.0))
     throw Error("sampleCadModel: model '" + model.name + "' has no area");
   const std::size_t count = sampleCount(options, total);
+  if (!options.face_density.empty())
+    cumulative = cumulativeFaceWeights(model, options.face_density);
   const FaceSampler sampler(model, std::move(cumulative));
 
   std::mt19937_64 rng(options.seed);

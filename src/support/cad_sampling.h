@@ -41,7 +41,19 @@ struct SamplingOptions
   /** Applied to the sampled points (noise added after). The truth is not rotated: use
    * rotated(model, rotation) for it; distances and face ids do not change. */
   Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();
+  /** Per-face density multipliers, indexed by face id: empty for a uniform density;
+   * otherwise one finite value >= 0 per face, not all zero. A face with multiplier m
+   * receives m times as many points per unit area as a face with multiplier 1 (a face
+   * is picked with probability proportional to m times its area); the total count is
+   * unchanged (from `count`, or from `spacing` over the true area). All ones give the
+   * same points as empty. */
+  std::vector<double> face_density;
 };
+
+/** \brief Per-face density multipliers: 1 on every face of the model but `dense_face`,
+ * which gets `ratio` (> 0, finite).
+ * \throws visfeat::Error for a face id out of range or a bad ratio. */
+std::vector<double> denseFace(const CadModel& model, int dense_face, double ratio);
 
 /** \brief A sampled cloud with its per-point truth. */
 struct CadSamples
@@ -62,11 +74,13 @@ struct CadSamples
  *   options  count or spacing, seed, noise sigma, rotation
  * Outputs:
  *   the points (rotated, then noise added), their face ids and curve distances.
- * A face is picked with probability proportional to its area, then a point uniformly
- * on it: planar faces by rejection in the bounding rectangle of the face, cylinders by
- * (angle, height).
+ * A face is picked with probability proportional to its area (times its
+ * options.face_density multiplier, when given), then a point uniformly on it: planar
+ * faces by rejection in the bounding rectangle of the face, cylinders by (angle,
+ * height).
  * \throws visfeat::Error for a negative or non-finite noise, no count and no positive
- * spacing, or a model of zero area. */
+ * spacing, a model of zero area, or face_density of the wrong size, with a negative or
+ * non-finite value, or zero on every face. */
 CadSamples sampleCadModel(const CadModel& model, const SamplingOptions& options);
 
 } // namespace synthetic
