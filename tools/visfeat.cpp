@@ -147,6 +147,7 @@ struct Input
   Eigen::Vector4f origin = Eigen::Vector4f::Zero();
   Eigen::Quaternionf orientation = Eigen::Quaternionf::Identity();
   std::shared_ptr<pcl::PointCloud<pcl::PointXYZ>> xyz;
+  std::shared_ptr<const visfeat::SurfaceMesh> mesh; // mesh input: its triangles
 };
 
 /** \brief Load the input cloud, or sample the input mesh, printing what was loaded. */
@@ -162,8 +163,9 @@ loadInput(const vt::Options& opt,
   print_value("%s ", opt.input.c_str());
   const bool mesh = vt::isMeshFile(opt.input);
   std::string summary;
-  if (mesh ? !vt::loadMeshAsCloud(opt.input, opt.mesh, in.cloud, summary, error)
-           : !vt::loadCloud(opt.input, in.cloud, in.origin, in.orientation, error)) {
+  if (mesh
+        ? !vt::loadMeshAsCloud(opt.input, opt.mesh, in.cloud, in.mesh, summary, error)
+        : !vt::loadCloud(opt.input, in.cloud, in.origin, in.orientation, error)) {
     print_info("\n");
     return false;
   }
@@ -209,6 +211,7 @@ configureEstimator(Estimator& estimator,
                    const std::shared_ptr<ProgressPrinter>& progress)
 {
   estimator.setInputCloud(in.xyz);
+  estimator.setInputMesh(in.mesh);
   estimator.setResolution(opt.resolution);
   estimator.setMaxRadius(opt.max_radius);
   estimator.setMinRadius(opt.min_radius);

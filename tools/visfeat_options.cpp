@@ -70,8 +70,10 @@ printHelp(const char* program)
     "  feature_class (uint8: 0 none, 1 vertex, 2 edge, 3 face); an existing field of\n"
     "  one of these names is overwritten. label is the region id (0 = none).\n");
   print_info(
-    "  A mesh (.obj, .off, or .ply with faces) is first sampled to a cloud: uniformly\n"
-    "  by area, with a fixed seed (the same mesh always gives the same cloud).\n");
+    "  A mesh (.obj, .off, or .ply with faces) gives the band directly: its triangles\n"
+    "  are rasterised into the cells (-fill mesh, the default for meshes); the output\n"
+    "  points are sampled on it uniformly by area, with a fixed seed (the same mesh\n"
+    "  always gives the same cloud; -mesh_points, -mesh_spacing).\n");
   print_info("  where options are:\n");
   print_info("    -resolution N     = cells along the longest side of the "
              "bounding box (default: ");
@@ -211,7 +213,6 @@ readValues(const Arguments& args, Options& opt, std::string& error)
                opt.fill_triangles.neighbours) ||
       !real("-fill_gap", Fill::kMaxGapRange, opt.fill_triangles.max_gap_degrees) ||
       !real("-fill_edge", Fill::kMaxEdgeRange, opt.fill_triangles.max_edge_spacings) ||
-      !real("-fill_inset", Fill::kCellInsetRange, opt.fill_triangles.cell_inset) ||
       !integer("-fill_votes", Fill::kMinVotesRange, opt.fill_triangles.min_votes))
     return false;
   if (args.has("-fill") && !visfeat::parseSurfaceFill(args.value("-fill"), opt.fill)) {

@@ -128,10 +128,12 @@ bool
 loadMeshAsCloud(const std::string& path,
                 const MeshDensity& density,
                 pcl::PCLPointCloud2& cloud,
+                std::shared_ptr<const visfeat::SurfaceMesh>& mesh_out,
                 std::string& summary,
                 std::string& error)
 {
-  visfeat::SurfaceMesh mesh;
+  auto loaded = std::make_shared<visfeat::SurfaceMesh>();
+  visfeat::SurfaceMesh& mesh = *loaded;
   if (!loadMesh(path, mesh, error))
     return false;
   try {
@@ -166,6 +168,7 @@ loadMeshAsCloud(const std::string& path,
       s << ", mean spacing " << std::sqrt(area / static_cast<double>(count));
     s << "; area-weighted uniform, seed " << kMeshSeed << ")";
     summary = s.str();
+    mesh_out = std::move(loaded);
   } catch (const visfeat::Error& e) {
     error = "'" + path + "': " + e.what();
     return false;

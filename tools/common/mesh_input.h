@@ -9,6 +9,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <string>
 
 namespace visfeat_tools {
@@ -45,10 +46,12 @@ bool toSurfaceMesh(const pcl::PolygonMesh& in,
 bool loadMesh(const std::string& path, visfeat::SurfaceMesh& mesh, std::string& error);
 
 /** \brief Load a mesh and sample it (area-weighted, seed kMeshSeed) into an x y z
- * cloud. `summary` says what was done, for the tool to print. */
+ * cloud, keeping the mesh (for the band: VisibilityFeatureEstimation::setInputMesh).
+ * `summary` says what was done, for the tool to print. */
 bool loadMeshAsCloud(const std::string& path,
                      const MeshDensity& density,
                      pcl::PCLPointCloud2& cloud,
+                     std::shared_ptr<const visfeat::SurfaceMesh>& mesh,
                      std::string& summary,
                      std::string& error);
 

@@ -55,7 +55,7 @@ localTriangleCells(const pcl::PointCloud<PointT>& cloud,
     umbrellaTriangles(points, neighbours, k, parameters, threads);
   if (triangle_count)
     *triangle_count = triangles.size();
-  return rasterizeTriangles(grid, points, triangles, threads, parameters.cell_inset);
+  return rasterizeTriangles(grid, points, triangles, threads);
 }
 
 } // namespace visfeat

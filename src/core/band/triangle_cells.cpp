@@ -36,17 +36,16 @@ scanTriangle(const Eigen::Vector3d& a,
              const Eigen::Vector3d& c,
              const Eigen::Vector3i& dims,
              std::vector<CellCoord>& out,
-             double inset,
              int depth)
 {
   const double longest =
     std::max({(b - a).squaredNorm(), (c - b).squaredNorm(), (a - c).squaredNorm()});
   if (longest > kMaxScannedEdge * kMaxScannedEdge && depth < kMaxSplitDepth) {
     const Eigen::Vector3d ab = 0.5 * (a + b), bc = 0.5 * (b + c), ca = 0.5 * (c + a);
-    scanTriangle(a, ab, ca, dims, out, inset, depth + 1);
-    scanTriangle(ab, b, bc, dims, out, inset, depth + 1);
-    scanTriangle(ca, bc, c, dims, out, inset, depth + 1);
-    scanTriangle(ab, bc, ca, dims, out, inset, depth + 1);
+    scanTriangle(a, ab, ca, dims, out, depth + 1);
+    scanTriangle(ab, b, bc, dims, out, depth + 1);
+    scanTriangle(ca, bc, c, dims, out, depth + 1);
+    scanTriangle(ab, bc, ca, dims, out, depth + 1);
     return;
   }
   const Eigen::Vector3d lo = a.cwiseMin(b).cwiseMin(c);
@@ -63,7 +62,7 @@ scanTriangle(const Eigen::Vector3d& a,
     for (int y = first.y(); y <= last.y(); ++y)
       for (int x = first.x(); x <= last.x(); ++x) {
         const CellCoord cell(x, y, z);
-        if (triangleTouchesCell(a, b, c, cell, inset))
+        if (triangleTouchesCell(a, b, c, cell))
           out.push_back(cell);
       }
 }
@@ -74,12 +73,10 @@ bool
 triangleTouchesCell(const Eigen::Vector3d& a,
                     const Eigen::Vector3d& b,
                     const Eigen::Vector3d& c,
-                    const CellCoord& cell,
-                    double inset)
+                    const CellCoord& cell)
 {
-  const double h = 0.5 * (1.0 - kUpperFaceInset) - inset;
-  const Eigen::Vector3d centre =
-    cell.cast<double>() + Eigen::Vector3d::Constant(inset + h);
+  const double h = 0.5 * (1.0 - kUpperFaceInset);
+  const Eigen::Vector3d centre = cell.cast<double>() + Eigen::Vector3d::Constant(h);
   const Eigen::Vector3d v0 = a - centre, v1 = b - centre, v2 = c - centre;
   // the box's axes
   for (int k = 0; k < 3; ++k)
@@ -106,18 +103,16 @@ appendTriangleCells(const Eigen::Vector3d& a,
                     const Eigen::Vector3d& b,
                     const Eigen::Vector3d& c,
                     const Eigen::Vector3i& dims,
-                    std::vector<CellCoord>& out,
-                    double inset)
+                    std::vector<CellCoord>& out)
 {
-  scanTriangle(a, b, c, dims, out, inset, 0);
+  scanTriangle(a, b, c, dims, out, 0);
 }
 
 std::vector<CellCoord>
 rasterizeTriangles(const GridSpec& grid,
                    const std::vector<Eigen::Vector3d>& vertices,
                    const std::vector<TriangleIndices>& triangles,
-                   int threads,
-                   double inset)
+                   int threads)
 {
   for (std::size_t v = 0; v < vertices.size(); ++v)
     if (!vertices[v].allFinite()) {
@@ -147,8 +142,7 @@ rasterizeTriangles(const GridSpec& grid,
       const std::size_t end = std::min(triangles.size(), (k + 1) * kTrianglesPerChunk);
       for (std::size_t t = k * kTrianglesPerChunk; t < end; ++t) {
         const TriangleIndices& tri = triangles[t];
-        scanTriangle(local[tri[0]], local[tri[1]], local[tri[2]], grid.dims, cells,
-                     inset, 0);
+        scanTriangle(local[tri[0]], local[tri[1]], local[tri[2]], grid.dims, cells, 0);
       }
       std::vector<std::uint64_t>& chunk = keys[k];
       chunk.reserve(cells.size());

@@ -153,11 +153,16 @@ TEST_F(MeshInput, SamplesAMeshIntoACloud)
   EXPECT_EQ(density.points, 1000000u) << "the documented default";
   density.points = 1000;
   pcl::PCLPointCloud2 cloud;
+  std::shared_ptr<const visfeat::SurfaceMesh> mesh;
   std::string summary, error;
-  ASSERT_TRUE(vt::loadMeshAsCloud(write("t.off", kTetrahedronOff), density, cloud,
+  ASSERT_TRUE(vt::loadMeshAsCloud(write("t.off", kTetrahedronOff), density, cloud, mesh,
                                   summary, error))
     << error;
   EXPECT_EQ(cloud.width * cloud.height, 1000u);
+  // the mesh itself is kept for the band
+  ASSERT_TRUE(mesh);
+  EXPECT_EQ(mesh->vertices.size(), 4u);
+  EXPECT_EQ(mesh->triangles.size(), 4u);
   EXPECT_EQ(pcl::getFieldsList(cloud), "x y z");
   EXPECT_EQ(summary.rfind("Sampled 1000 points from 4 triangles (4 vertices, area ", 0),
             0u)
@@ -167,7 +172,7 @@ TEST_F(MeshInput, SamplesAMeshIntoACloud)
 
   // The same mesh gives the same cloud.
   pcl::PCLPointCloud2 again;
-  ASSERT_TRUE(vt::loadMeshAsCloud(path("t.off"), density, again, summary, error));
+  ASSERT_TRUE(vt::loadMeshAsCloud(path("t.off"), density, again, mesh, summary, error));
   EXPECT_EQ(again.data, cloud.data);
 }
 
@@ -176,13 +181,15 @@ TEST_F(MeshInput, RefusesMeshesWithoutArea)
   vt::MeshDensity density;
   density.points = 10;
   pcl::PCLPointCloud2 cloud;
+  std::shared_ptr<const visfeat::SurfaceMesh> mesh;
   std::string summary, error;
   const std::string none = write("none.off", "OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n");
-  EXPECT_FALSE(vt::loadMeshAsCloud(none, density, cloud, summary, error));
+  EXPECT_FALSE(vt::loadMeshAsCloud(none, density, cloud, mesh, summary, error));
   EXPECT_EQ(error, "'" + none + "': the mesh has no faces");
   const std::string flat =
     write("flat.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n2 0 0\n3 0 1 2\n");
-  EXPECT_FALSE(vt::loadMeshAsCloud(flat, density, cloud, summary, error));
+  EXPECT_FALSE(vt::loadMeshAsCloud(flat, density, cloud, mesh, summary, error));
+  EXPECT_FALSE(mesh);
   EXPECT_EQ(error, "'" + flat +
                      "': the mesh has zero area (all 1 triangles are "
                      "degenerate)");

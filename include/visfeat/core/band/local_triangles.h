@@ -31,10 +31,6 @@ struct LocalTriangleParameters
    * plane allows (across creases, where the planes disagree). */
   int min_votes = 1;
   static constexpr ParameterRange<int> kMinVotesRange{1, 3};
-  /** \brief Cells join where a triangle meets the cell's box shrunk by this on every
-   * side (cells). */
-  double cell_inset = 0.1;
-  static constexpr ParameterRange<double> kCellInsetRange{0.0, 0.4};
   /** \brief The neighbour whose distance is a point's local spacing (1-based, among
    * the distinct neighbours: copies at distance 0 are skipped). */
   static constexpr int kSpacingNeighbour = 4;

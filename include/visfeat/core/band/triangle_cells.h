@@ -22,8 +22,7 @@ namespace visfeat {
 bool triangleTouchesCell(const Eigen::Vector3d& a,
                          const Eigen::Vector3d& b,
                          const Eigen::Vector3d& c,
-                         const CellCoord& cell,
-                         double inset = 0.0);
+                         const CellCoord& cell);
 
 /** \brief How far the upper faces of a cell's box are moved in for
  * triangleTouchesCell (cell units). */
@@ -35,8 +34,7 @@ void appendTriangleCells(const Eigen::Vector3d& a,
                          const Eigen::Vector3d& b,
                          const Eigen::Vector3d& c,
                          const Eigen::Vector3i& dims,
-                         std::vector<CellCoord>& out,
-                         double inset = 0.0);
+                         std::vector<CellCoord>& out);
 
 /** \brief A triangle as three indices into a vertex array. */
 using TriangleIndices = std::array<std::uint32_t, 3>;
@@ -54,7 +52,6 @@ using TriangleIndices = std::array<std::uint32_t, 3>;
 std::vector<CellCoord> rasterizeTriangles(const GridSpec& grid,
                                           const std::vector<Eigen::Vector3d>& vertices,
                                           const std::vector<TriangleIndices>& triangles,
-                                          int threads,
-                                          double inset = 0.0);
+                                          int threads);
 
 } // namespace visfeat
