@@ -641,10 +641,17 @@ TEST(TopologyGraph, JsonParsesAndHoldsTheGraph)
                      {"raw", "false"},      {"repair", "true"},  {"name", "abc"},
                      {"octal", "016"},      {"nan", "nan"},      {"empty", ""},
                      {"quote\"key", "2."}};
+  meta.warnings = {"no face found: raise the resolution", "second \"one\""};
+  meta.notes = {"the cloud is flat"};
   const std::string text = jsonOf(g, meta);
   Json j;
   ASSERT_NO_THROW(j = parseJson(text)) << text;
   EXPECT_EQ(j.at("format"), "visfeat-topology-graph");
+  ASSERT_EQ(j.at("warnings").size(), 2u);
+  EXPECT_EQ(j.at("warnings")[0], meta.warnings[0]);
+  EXPECT_EQ(j.at("warnings")[1], meta.warnings[1]);
+  ASSERT_EQ(j.at("notes").size(), 1u);
+  EXPECT_EQ(j.at("notes")[0], "the cloud is flat");
   EXPECT_EQ(j.at("version"), 1);
   EXPECT_EQ(j.at("source"), meta.source);
   EXPECT_EQ(j.at("grid").at("origin").size(), 3u);

@@ -6,11 +6,12 @@
 #                    -voxels header, and the -graph JSON: 8 vertices, 12 edges, 6 faces,
 #                    72 arcs, every edge joined to exactly 2 vertices and 2 faces
 #   mesh_off         a cube .off mesh (quads), 200,000 samples, resolution 96 -> same graph
-#   mesh_obj         the cube as .obj, 150,000 samples, automatic resolution (79) -> same
-#                    graph
+#   mesh_obj         the cube as .obj, 150,000 samples, automatic resolution (79 from the
+#                    points, raised to 256: the mesh is rasterised) -> same graph
 #   mesh_ply         the cube as a .ply with faces, -mesh_spacing 0.02 -> 60,000 samples
 #   auto_resolution  a cube generated at 0.5-cell spacing for resolution 128, run without
-#                    -resolution -> "Resolution 12x-13x chosen" and the cube's graph
+#                    -resolution -> the points support 12x-13x, raised to 256 with the
+#                    band filled between them, and the cube's graph
 #   coplanar         a flat square patch -> processed, with a note, as one face
 
 cmake_minimum_required(VERSION 3.19) # string(JSON); policies NEW (CMP0053)
@@ -178,11 +179,13 @@ elseif(CASE STREQUAL "mesh_obj")
   endforeach()
   run("${VISFEAT}" "${mesh}" "${out}" -mesh_points 150000 -graph "${graph}")
   expect_output("Sampled 150000 points from 12 triangles")
-  # mean spacing sqrt(24 / 150000) = 0.01265: a cell of 2 spacings is 1/79 of the side
-  string(REGEX MATCH "Resolution ([0-9]+) chosen: point spacing" _ "${run_out}")
+  # mean spacing sqrt(24 / 150000) = 0.01265: a cell of 2 spacings is 1/79 of the side;
+  # the mesh is rasterised exactly, so the resolution is raised to 256
+  string(REGEX MATCH "Resolution 256 chosen: point spacing [^;]*; the points alone support ([0-9]+), raised to 256" _ "${run_out}")
   if(NOT CMAKE_MATCH_1 OR CMAKE_MATCH_1 LESS 76 OR CMAKE_MATCH_1 GREATER 82)
-    fail("resolution '${CMAKE_MATCH_1}' chosen, expected 79 +- 3")
+    fail("points' resolution '${CMAKE_MATCH_1}', expected 79 +- 3, raised to 256")
   endif()
+  expect_output("Band from mesh: a mesh was given")
   expect_pcd("${out}" "${out_fields}" 150000)
   expect_graph("${graph}" 8 12 6 72)
 elseif(CASE STREQUAL "mesh_ply")
@@ -201,15 +204,18 @@ elseif(CASE STREQUAL "auto_resolution")
   set(cloud "${dir}/cube.pcd")
   run("${GENERATE}" cube "${cloud}" -resolution 128 -seed 2)
   run("${VISFEAT}" "${cloud}" "${out}" -graph "${graph}")
-  string(REGEX MATCH "Resolution ([0-9]+) chosen: point spacing [0-9.e-]+ \\(median distance to the 8th nearest neighbour over 10000 points\\), 2 spacings per cell" line "${run_out}")
+  # the points support about 128 cells; the fill between them lets the topology have 256
+  string(REGEX MATCH "Resolution 256 chosen: point spacing [0-9.e-]+ \\(median distance to the 8th nearest neighbour over 10000 points\\), 2 spacings per cell, extent [0-9.e-]+; the points alone support ([0-9]+), raised to 256" line "${run_out}")
   set(chosen "${CMAKE_MATCH_1}")
   if(NOT line)
-    fail("no 'Resolution N chosen: ...' line")
+    fail("no 'Resolution 256 chosen: ... the points alone support N, raised to 256' line")
   elseif(chosen LESS 122 OR chosen GREATER 134) # 128 +- 5%
-    fail("resolution ${chosen} chosen for a cloud sampled at 0.5 cell of 128")
+    fail("the points' resolution ${chosen} for a cloud sampled at 0.5 cell of 128")
   endif()
-  if(NOT run_out MATCHES "Computing visibility features \\(resolution ${chosen},")
-    fail("the chosen resolution was not used")
+  expect_output("Band from triangles: point spacing")
+  string(REGEX MATCH "dims ([0-9]+) x ([0-9]+) x ([0-9]+)" _ "${run_out}")
+  if(NOT CMAKE_MATCH_1 OR (CMAKE_MATCH_1 LESS 250 AND CMAKE_MATCH_2 LESS 250 AND CMAKE_MATCH_3 LESS 250))
+    fail("the raised resolution was not used (dims ${CMAKE_MATCH_1} x ${CMAKE_MATCH_2} x ${CMAKE_MATCH_3})")
   endif()
   expect_graph("${graph}" 8 12 6 72)
 elseif(CASE STREQUAL "coplanar")

@@ -89,8 +89,13 @@ graphMetadata(const Estimator& estimator, const Options& opt)
   meta.grid = estimator.getGrid();
   meta.source = opt.input;
   const auto& sp = estimator.getSegmentationParameters();
+  meta.warnings = estimator.getWarnings();
+  meta.notes = estimator.getNotes();
   meta.parameters = {
-    {"resolution", std::to_string(opt.resolution)},
+    {"resolution", std::to_string(estimator.getResolutionEstimate().resolution)},
+    {"resolution_reason", estimator.getResolutionEstimate().reason},
+    {"fill", visfeat::surfaceFillName(estimator.getSurfaceFillUsed())},
+    {"fill_reason", estimator.getSurfaceFillReason()},
     {"min_radius", std::to_string(sp.components.min_radius)},
     {"max_radius", std::to_string(opt.max_radius)},
     {"vertex_max_cells", std::to_string(sp.components.vertex_max_cells)},

@@ -2,6 +2,7 @@
 
 #include <visfeat/core/band/local_triangles.h>
 #include <visfeat/core/band/triangle_cells.h>
+#include <visfeat/core/band/voxel_band.h>
 #include <visfeat/core/grid/grid_spec.h>
 
 #include <pcl/point_cloud.h>
@@ -62,6 +63,12 @@ constexpr double kFillCheckPointsPerCell2 = 4.0;
  * 20,000-point cube at the 48 cells its density alone allows (1 face of 6 found). */
 constexpr double kMinCoreShare = 0.15;
 
+/** \brief compute() warns when the band's largest 6-connected piece holds fewer of its
+ * cells than this: a points-only band of a cloud sparser than the cells falls into
+ * specks (the largest under 1% of the band on a 5,000-point tetrahedron at 200 cells),
+ * while a scene of a few objects keeps pieces of a sizeable share each. */
+constexpr double kMinLargestPieceShare = 0.1;
+
 /** \brief compute() warns when more of the band's cells than this were added by the
  * repair (a band full of holes): 0.13 on the dense generated models. */
 constexpr double kMaxRepairShare = 0.3;
@@ -76,6 +83,20 @@ std::vector<CellCoord> localTriangleCells(const pcl::PointCloud<PointT>& cloud,
                                           const LocalTriangleParameters& parameters,
                                           int threads,
                                           std::size_t* triangles = nullptr);
+
+/** \brief The points of a cloud as entries of given cells (a mesh's band): each finite
+ * point joins the cell it falls in when that is one of `cells`, else the nearest of
+ * them among its 26 neighbours (points a rounding away from a face that lies on a cell
+ * boundary), else none (-1). The points then add no cell of their own to the band.
+ * \param[in] cells sorted by GridSpec::linearKey, no duplicates (rasterizeTriangles())
+ * \param[out] occupied one entry per cell that received points
+ * \param[out] point_occupied per point, its entry in occupied, or -1 */
+template <typename PointT>
+void pointsOnCells(const pcl::PointCloud<PointT>& cloud,
+                   const GridSpec& grid,
+                   const std::vector<CellCoord>& cells,
+                   std::vector<OccupiedCell>& occupied,
+                   std::vector<std::int32_t>& point_occupied);
 
 } // namespace visfeat
 

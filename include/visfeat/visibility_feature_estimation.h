@@ -393,6 +393,7 @@ private:
     GridSpec grid;
     ResolutionEstimate resolution;
     SurfaceFill fill = SurfaceFill::kPoints;
+    bool raised_for_fill = false; // the automatic resolution counts on a fill
     std::string fill_reason;
     std::vector<std::string> notes;
     std::vector<std::string> warnings;

@@ -7,6 +7,7 @@
 #include <pcl/search/kdtree.h>
 
 #include <algorithm>
+#include <limits>
 #include <memory>
 
 namespace visfeat {
@@ -58,9 +59,75 @@ localTriangleCells(const pcl::PointCloud<PointT>& cloud,
   return rasterizeTriangles(grid, points, triangles, threads);
 }
 
+template <typename PointT>
+void
+pointsOnCells(const pcl::PointCloud<PointT>& cloud,
+              const GridSpec& grid,
+              const std::vector<CellCoord>& cells,
+              std::vector<OccupiedCell>& occupied,
+              std::vector<std::int32_t>& point_occupied)
+{
+  std::vector<std::uint64_t> keys(cells.size());
+  for (std::size_t i = 0; i < cells.size(); ++i)
+    keys[i] = grid.linearKey(cells[i]);
+  auto find = [&](const CellCoord& c) -> std::int64_t {
+    if (!grid.contains(c))
+      return -1;
+    const auto it = std::lower_bound(keys.begin(), keys.end(), grid.linearKey(c));
+    return it != keys.end() && *it == grid.linearKey(c) ? it - keys.begin() : -1;
+  };
+  std::vector<std::int32_t> entry_of(cells.size(), -1);
+  occupied.clear();
+  point_occupied.assign(cloud.size(), -1);
+  const double scale = OccupiedCell::kOffsetScale / grid.cell_size;
+  for (std::size_t i = 0; i < cloud.size(); ++i) {
+    const PointT& p = cloud[i];
+    if (!pcl::isXYZFinite(p))
+      continue;
+    const Eigen::Vector3d q(p.x, p.y, p.z);
+    const CellCoord home = grid.cellOf(q);
+    std::int64_t found = find(home);
+    if (found < 0) { // the nearest cell centre among the 26 neighbours
+      double best = std::numeric_limits<double>::infinity();
+      for (int dz = -1; dz <= 1; ++dz)
+        for (int dy = -1; dy <= 1; ++dy)
+          for (int dx = -1; dx <= 1; ++dx) {
+            const CellCoord c = home + CellCoord(dx, dy, dz);
+            const std::int64_t at = find(c);
+            const double d = (grid.cellCenter(c) - q).squaredNorm();
+            if (at >= 0 && d < best) {
+              best = d;
+              found = at;
+            }
+          }
+    }
+    if (found < 0)
+      continue;
+    std::int32_t& entry = entry_of[static_cast<std::size_t>(found)];
+    if (entry < 0) {
+      entry = static_cast<std::int32_t>(occupied.size());
+      OccupiedCell cell;
+      cell.coord = cells[static_cast<std::size_t>(found)];
+      occupied.push_back(cell);
+    }
+    OccupiedCell& cell = occupied[static_cast<std::size_t>(entry)];
+    const Eigen::Vector3d cell_min =
+      grid.origin + grid.cell_size * cell.coord.template cast<double>();
+    const Eigen::Vector3d offset =
+      ((q - cell_min) * scale).cwiseMax(0.0).cwiseMin(OccupiedCell::kOffsetScale);
+    cell.offset_sum += (offset.array() + 0.5).template cast<std::int64_t>().matrix();
+    ++cell.point_count;
+    point_occupied[i] = entry;
+  }
+}
+
 } // namespace visfeat
 
 #define PCL_INSTANTIATE_VisfeatSurfaceFill(T)                                          \
   template std::vector<visfeat::CellCoord> visfeat::localTriangleCells<T>(             \
     const pcl::PointCloud<T>&, const visfeat::GridSpec&,                               \
-    const visfeat::LocalTriangleParameters&, int, std::size_t*);
+    const visfeat::LocalTriangleParameters&, int, std::size_t*);                       \
+  template void visfeat::pointsOnCells<T>(                                             \
+    const pcl::PointCloud<T>&, const visfeat::GridSpec&,                               \
+    const std::vector<visfeat::CellCoord>&, std::vector<visfeat::OccupiedCell>&,       \
+    std::vector<std::int32_t>&);

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <visfeat/core/band/band_pieces.h>
 #include <visfeat/core/common/error.h>
 #include <visfeat/core/common/memory_budget.h>
 #include <visfeat/core/common/threads.h>
@@ -223,6 +224,7 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::chooseResolution(
              << " suits parts whose faces span 1/8 of their size)";
       run.resolution.resolution = raised;
       run.resolution.reason = reason.str();
+      run.raised_for_fill = true;
     }
   }
   return run.resolution.resolution;
@@ -242,10 +244,13 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::chooseFill(Run& run) const
   } else if (mesh_) {
     run.fill = SurfaceFill::kMesh;
     reason << "a mesh was given: its triangles rasterised";
-  } else if (run.resolution.spacing > 0.0 && spacing_cells > kFillSpacingCells) {
+  } else if (run.raised_for_fill ||
+             (run.resolution.spacing > 0.0 && spacing_cells > kFillSpacingCells)) {
     run.fill = SurfaceFill::kLocalTriangles;
-    reason << "point spacing " << spacing_cells << " cells, fewer than one point a cell"
-           << " length: the band is filled between neighbouring points";
+    reason << "point spacing " << spacing_cells << " cells, "
+           << (run.raised_for_fill ? "the resolution was raised beyond the points"
+                                   : "fewer than one point a cell length")
+           << ": the band is filled between neighbouring points";
   } else {
     run.fill = SurfaceFill::kPoints;
     reason << "the cells of the points";
@@ -410,8 +415,18 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::computeResults(
   auto start = Clock::now();
   VoxelBand::Options band_options = band_options_;
   band_options.threads = run.visibility.threads;
-  results.band =
-    buildVoxelBand(*surface, run.grid, band_options, fillCells(run, *surface));
+  if (run.fill == SurfaceFill::kMesh) {
+    // the mesh alone makes the band; the points land on its cells
+    std::vector<CellCoord> cells = fillCells(run, *surface);
+    std::vector<OccupiedCell> occupied;
+    std::vector<std::int32_t> point_occupied;
+    pointsOnCells(*surface, run.grid, cells, occupied, point_occupied);
+    results.band = VoxelBand::build(run.grid, std::move(occupied), point_occupied,
+                                    band_options, cells);
+  } else {
+    results.band =
+      buildVoxelBand(*surface, run.grid, band_options, fillCells(run, *surface));
+  }
   run.times.band_ms = detail::millisecondsSince(start);
 
   start = Clock::now();
@@ -458,12 +473,25 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::checkResults(const Results& re
   for (const Region& region : results.segmentation.regions())
     if (region.feature_class == FeatureClass::kFace)
       ++faces;
-  const int resolution = run.grid.dims.maxCoeff() - 2 * GridSpec::kPadding;
+  const int resolution = run.resolution.resolution;
   const double core_share = band.empty() ? 0.0 : double(cores) / double(band.size());
   const double repair_share =
     band.empty() ? 0.0 : double(band.repairCellCount()) / double(band.size());
+  // a band in pieces: the points are sparser than the cells
+  std::size_t largest_piece = 0;
+  for (const std::uint32_t size : bandPieceSizes(band))
+    largest_piece = std::max<std::size_t>(largest_piece, size);
   std::ostringstream w;
-  if (results.segmentation.regions().empty() || faces == 0) {
+  if (double(largest_piece) < kMinLargestPieceShare * double(band.size())) {
+    w << "the band falls apart: its largest 6-connected piece holds " << largest_piece
+      << " of " << band.size() << " cells (the points are sparser than the cells at "
+      << "resolution " << resolution << "); "
+      << (run.fill == SurfaceFill::kPoints
+            ? "fill the band between the points (fill 'triangles') or lower the "
+              "resolution"
+            : "lower the resolution");
+    run.warnings.push_back(w.str());
+  } else if (results.segmentation.regions().empty() || faces == 0) {
     w << (faces == 0 && !results.segmentation.regions().empty() ? "no face found"
                                                                 : "no region found")
       << ": " << cores << " of " << band.size() << " band cells reach min_radius "

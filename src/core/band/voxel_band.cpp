@@ -188,8 +188,10 @@ addFillCells(const GridSpec& grid,
   std::vector<std::pair<std::uint64_t, std::size_t>> keyed(fill.size());
   for (std::size_t i = 0; i < fill.size(); ++i)
     keyed[i] = {grid.linearKey(fill[i]), i};
-  std::sort(keyed.begin(), keyed.end());
+  if (!std::is_sorted(keyed.begin(), keyed.end()))
+    std::sort(keyed.begin(), keyed.end()); // rasterizeTriangles() gives them sorted
   const std::size_t before = occupied.size();
+  occupied.reserve(occupied.size() + fill.size());
   for (std::size_t i = 0; i < keyed.size(); ++i) {
     if (i > 0 && keyed[i].first == keyed[i - 1].first)
       continue;
@@ -237,6 +239,8 @@ VoxelBand::build(const GridSpec& grid,
   std::vector<std::uint32_t> counts;
   std::vector<Eigen::Vector3d> sums; // sum of point positions, cell units
   coords.reserve(occupied.size());
+  counts.reserve(occupied.size());
+  sums.reserve(occupied.size());
   for (std::size_t r = 0; r < order.size(); ++r) {
     const OccupiedCell& cell = occupied[order[r]];
     if (r > 0 && coords.back() == cell.coord)

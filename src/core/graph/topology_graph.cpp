@@ -557,6 +557,8 @@ TopologyGraph::writeJson(std::ostream& out, const GraphMetadata& meta) const
   document["source"] = meta.source;
   document["grid"] = grid;
   document["parameters"] = parameters;
+  document["warnings"] = meta.warnings;
+  document["notes"] = meta.notes;
   document["counts"] = counts;
   document["nodes"] = nodes;
   document["arcs"] = all_arcs;

@@ -24,7 +24,7 @@ struct LocalTriangleParameters
   /** \brief Triangle edges longer than this many local spacings (the point's distance
    * to its kSpacingNeighbour-th neighbour) are left out: they would bridge gaps and
    * holes of the scan. */
-  double max_edge_spacings = 6.0;
+  double max_edge_spacings = 3.5;
   static constexpr ParameterRange<double> kMaxEdgeRange{1.0, 10.0};
   /** \brief A triangle is kept when at least this many of its 3 corners find it
    * Delaunay around themselves: 2 drops the chords that only one corner's tangent
@@ -33,7 +33,7 @@ struct LocalTriangleParameters
   static constexpr ParameterRange<int> kMinVotesRange{1, 3};
   /** \brief The neighbour whose distance is a point's local spacing (1-based, among
    * the distinct neighbours: copies at distance 0 are skipped). */
-  static constexpr int kSpacingNeighbour = 4;
+  static constexpr int kSpacingNeighbour = 12;
 
   /** \throws visfeat::Error for a value out of its range. */
   void validate() const;

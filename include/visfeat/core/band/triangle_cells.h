@@ -15,18 +15,15 @@ namespace visfeat {
  *
  * The separating-axis test of Akenine-Moller ("Fast 3D triangle-box overlap testing",
  * 2001): the 3 box axes, the triangle's normal and the 9 cross products of edges and
- * axes. Exact up to rounding; a triangle lying exactly on the plane between two cells
- * touches the upper one only (the box's upper faces are moved in by kUpperFaceInset),
- * so a plane at a cell boundary gives one layer of cells, as points on it would.
- * Degenerate triangles (segments, points) are handled. */
+ * axes. The box axes are tested exactly and half-open, so a triangle lying on the plane
+ * between two cells touches the upper one only and a plane at a cell boundary gives
+ * one layer of cells, as points on it would; the other axes use the closed box widened
+ * by 1e-9 cells, so rounding never loses a cell. Degenerate triangles (segments,
+ * points) are handled. */
 bool triangleTouchesCell(const Eigen::Vector3d& a,
                          const Eigen::Vector3d& b,
                          const Eigen::Vector3d& c,
                          const CellCoord& cell);
-
-/** \brief How far the upper faces of a cell's box are moved in for
- * triangleTouchesCell (cell units). */
-constexpr double kUpperFaceInset = 1e-9;
 
 /** \brief Appends the cells of a grid of `dims` cells that triangle (a, b, c) (cell
  * units) touches (triangleTouchesCell); cells outside the grid are left out. */

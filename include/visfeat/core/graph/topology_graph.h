@@ -93,6 +93,12 @@ struct GraphMetadata
   std::vector<std::pair<std::string, std::string>> parameters;
   /** \brief Where the graph came from, e.g. the input file name. */
   std::string source;
+  /** \brief Results that cannot be trusted, one line each with the cause and what to
+   * do (VisibilityFeatureEstimation::getWarnings()); written as "warnings", always
+   * (an empty array when there are none). */
+  std::vector<std::string> warnings;
+  /** \brief Notes on the input (getNotes()), written as "notes". */
+  std::vector<std::string> notes;
 };
 
 /** \brief The topology graph: which vertex touches which edge, which edge bounds which
