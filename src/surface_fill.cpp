@@ -14,6 +14,8 @@ surfaceFillName(SurfaceFill fill)
     return "triangles";
   case SurfaceFill::kMesh:
     return "mesh";
+  case SurfaceFill::kOrganized:
+    return "grid";
   }
   return "auto";
 }
@@ -21,8 +23,9 @@ surfaceFillName(SurfaceFill fill)
 bool
 parseSurfaceFill(const std::string& name, SurfaceFill& fill)
 {
-  for (const SurfaceFill f : {SurfaceFill::kAuto, SurfaceFill::kPoints,
-                              SurfaceFill::kLocalTriangles, SurfaceFill::kMesh})
+  for (const SurfaceFill f :
+       {SurfaceFill::kAuto, SurfaceFill::kPoints, SurfaceFill::kLocalTriangles,
+        SurfaceFill::kMesh, SurfaceFill::kOrganized})
     if (name == surfaceFillName(f)) {
       fill = f;
       return true;

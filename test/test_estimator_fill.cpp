@@ -190,4 +190,36 @@ TEST(EstimatorFill, TheMeshFillNeedsAMesh)
     << est.getErrorMessage();
 }
 
+TEST(EstimatorFill, AnOrganizedViewOfTheCubeGivesItsCorner)
+{
+  // one view from a corner: 3 faces, 3 edges, 1 vertex; the silhouette and the shadow
+  // borders of a projector 0.2 units aside are no creases
+  for (const double baseline : {0.0, 0.2}) {
+    const syn::CadModel model = syn::cadModelByName("cube");
+    syn::OrganizedViewOptions view;
+    view.width = 320;
+    view.height = 240;
+    view.baseline = baseline;
+    view.noise_a = 2e-4;
+    const syn::OrganizedView image = syn::renderOrganizedView(model, view);
+    auto cloud = std::make_shared<Cloud>(static_cast<std::uint32_t>(image.width),
+                                         static_cast<std::uint32_t>(image.height));
+    for (std::size_t i = 0; i < image.points.size(); ++i)
+      (*cloud)[i].getVector3fMap() = image.points[i];
+    cloud->is_dense = false;
+    cloud->sensor_origin_.head<3>() = image.camera_position.cast<float>();
+    Estimator est;
+    est.setInputCloud(cloud);
+    est.setResolution(0);
+    Output out;
+    est.compute(out);
+    ASSERT_EQ(est.getErrorMessage(), "");
+    EXPECT_EQ(est.getSurfaceFillUsed(), visfeat::SurfaceFill::kOrganized);
+    EXPECT_EQ(counts(est), (std::array<std::size_t, 4>{1, 3, 3, 0}))
+      << "baseline " << baseline;
+    EXPECT_TRUE(est.getWarnings().empty()) << est.getWarnings().front();
+    EXPECT_EQ(out.size(), image.points.size()) << "one output point per pixel";
+  }
+}
+
 } // namespace

@@ -87,6 +87,13 @@ toOrganizedCloud(const syn::OrganizedView& view, pcl::PointCloud<PointGenerated>
   cloud.width = static_cast<std::uint32_t>(view.width);
   cloud.height = static_cast<std::uint32_t>(view.height);
   cloud.is_dense = false;
+  // The camera's position in the points' own frame, as PCL's normal estimation reads
+  // sensor_origin_ (useSensorOriginAsViewPoint) and visfeat's grid fill does; the
+  // orientation stays the identity: the points are not in the camera's frame.
+  cloud.sensor_origin_ =
+    Eigen::Vector4f(static_cast<float>(view.camera_position.x()),
+                    static_cast<float>(view.camera_position.y()),
+                    static_cast<float>(view.camera_position.z()), 0.0f);
 }
 
 bool

@@ -29,7 +29,8 @@ pcl::PolygonMesh toPolygonMesh(const visfeat::synthetic::CadMesh& mesh);
 
 /** \brief The view as an organized cloud: width x height points, row-major; an empty
  * pixel has NaN x y z and curve_distance and face_id 4294967295; is_dense false. The
- * points are in the model's (world) frame, the sensor pose is left at the identity. */
+ * points are in the model's (world) frame; sensor_origin_ (the PCD VIEWPOINT) is the
+ * camera's position in that frame, its orientation the identity. */
 void toOrganizedCloud(const visfeat::synthetic::OrganizedView& view,
                       pcl::PointCloud<PointGenerated>& cloud);
 

@@ -200,6 +200,9 @@ prepareXYZ(vt::Options& opt, bool user_resolution, Input& in, std::string& error
   }
   in.xyz = std::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
   vt::toXYZ(in.cloud, *in.xyz);
+  // the sensor pose: the grid fill of an organized cloud casts its rays from it
+  in.xyz->sensor_origin_ = in.origin;
+  in.xyz->sensor_orientation_ = in.orientation;
   return vt::checkShapeAndResolution(opt.input, *in.xyz, user_resolution,
                                      opt.resolution, error);
 }

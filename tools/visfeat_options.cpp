@@ -132,16 +132,14 @@ printHelp(const char* program)
   print_value("repair on");
   print_info(")\n");
   print_info(
-    "    -fill F           = where the band comes from: points (the cells of "
-    "the\n"
-    "                        points), triangles (also the cells between "
-    "neighbouring\n"
-    "                        points, for clouds sparser than the cells), mesh "
-    "(the\n"
-    "                        input mesh's triangles), auto (default: mesh for a "
-    "mesh,\n"
-    "                        triangles below one point a cell length, else "
-    "points)\n");
+    "    -fill F           = where the band comes from: points (the cells of the\n"
+    "                        points), triangles (also the cells between\n"
+    "                        neighbouring points, for clouds sparser than the\n"
+    "                        cells), grid (an organized cloud's pixel grid, cut at\n"
+    "                        depth jumps), mesh (the input mesh's triangles), auto\n"
+    "                        (default: mesh for a mesh, grid for an organized\n"
+    "                        cloud, triangles below one point a cell length, else\n"
+    "                        points)\n");
   print_info("    -fill_neighbours K = neighbours a point's triangles join (default: ");
   print_value("%d", visfeat::LocalTriangleParameters{}.neighbours);
   print_info(")\n");

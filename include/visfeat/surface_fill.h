@@ -1,6 +1,7 @@
 #pragma once
 
 #include <visfeat/core/band/local_triangles.h>
+#include <visfeat/core/band/organized_triangles.h>
 #include <visfeat/core/band/triangle_cells.h>
 #include <visfeat/core/band/voxel_band.h>
 #include <visfeat/core/grid/grid_spec.h>
@@ -19,19 +20,22 @@ namespace visfeat {
  * - kLocalTriangles: those cells plus the cells of the umbrella triangles between each
  *   point and its neighbours (umbrellaTriangles()), for clouds sparser than the cells.
  * - kMesh: the cells of the input mesh's triangles, rasterised exactly
- *   (rasterizeTriangles()), plus the cells of the points.
- * - kAuto: kMesh when a mesh is given, else kLocalTriangles when the cloud has fewer
- *   than about one point per cell length (its spacing above kFillSpacingCells cells),
- *   else kPoints. */
+ *   (rasterizeTriangles()); the points land on those cells (pointsOnCells()).
+ * - kOrganized: an organized cloud's pixel grid cut at depth jumps
+ *   (organizedTriangles()), rasterised, plus the cells of the points.
+ * - kAuto: kMesh when a mesh is given, else kOrganized for an organized cloud (height
+ *   > 1), else kLocalTriangles when the cloud has fewer than about one point per cell
+ *   length (its spacing above kFillSpacingCells cells), else kPoints. */
 enum class SurfaceFill
 {
   kAuto,
   kPoints,
   kLocalTriangles,
   kMesh,
+  kOrganized,
 };
 
-/** \brief "auto", "points", "triangles", "mesh". */
+/** \brief "auto", "points", "triangles", "mesh", "grid". */
 const char* surfaceFillName(SurfaceFill fill);
 
 /** \brief The fill named by surfaceFillName(); false for another name. */
@@ -91,6 +95,17 @@ std::vector<CellCoord> localTriangleCells(const pcl::PointCloud<PointT>& cloud,
  * \param[in] cells sorted by GridSpec::linearKey, no duplicates (rasterizeTriangles())
  * \param[out] occupied one entry per cell that received points
  * \param[out] point_occupied per point, its entry in occupied, or -1 */
+/** \brief The cells of an organized cloud's pixel grid (organizedTriangles() from
+ * the cloud's sensor_origin_), rasterised on grid.
+ * \throws visfeat::Error when the cloud is not organized (height 1, or width x height
+ * is not its size) or for bad parameters. */
+template <typename PointT>
+std::vector<CellCoord> organizedCells(const pcl::PointCloud<PointT>& cloud,
+                                      const GridSpec& grid,
+                                      const OrganizedTriangleParameters& parameters,
+                                      int threads,
+                                      std::size_t* triangles = nullptr);
+
 template <typename PointT>
 void pointsOnCells(const pcl::PointCloud<PointT>& cloud,
                    const GridSpec& grid,

@@ -257,8 +257,9 @@ public:
   inline double getOpacity() const { return opacity_; }
 
   /** \brief Where the band's cells come from (SurfaceFill; default kAuto: the input
-   * mesh when one is set, the umbrella triangles between the points when the cloud
-   * has fewer than about one point per cell length, else the points). */
+   * mesh when one is set, an organized cloud's pixel grid, the triangles between the
+   * points when the cloud has fewer than about one point per cell length, else the
+   * points). */
   inline void setSurfaceFill(SurfaceFill fill) { surface_fill_ = fill; }
   inline SurfaceFill getSurfaceFill() const { return surface_fill_; }
 
@@ -270,6 +271,17 @@ public:
   inline const LocalTriangleParameters& getLocalTriangleParameters() const
   {
     return local_triangles_;
+  }
+
+  /** \brief The fill's triangles of an organized cloud (OrganizedTriangleParameters).
+   */
+  inline void setOrganizedTriangleParameters(const OrganizedTriangleParameters& p)
+  {
+    organized_triangles_ = p;
+  }
+  inline const OrganizedTriangleParameters& getOrganizedTriangleParameters() const
+  {
+    return organized_triangles_;
   }
 
   /** \brief A triangle mesh of the same surface (world units, the input cloud's
@@ -446,6 +458,7 @@ private:
   bool keep_free_space_ = false;
   SurfaceFill surface_fill_ = SurfaceFill::kAuto;
   LocalTriangleParameters local_triangles_;
+  OrganizedTriangleParameters organized_triangles_;
   std::shared_ptr<const SurfaceMesh> mesh_;
 
   // Between initCompute() and computeFeature().

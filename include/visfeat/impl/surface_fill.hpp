@@ -1,5 +1,6 @@
 #pragma once
 
+#include <visfeat/core/common/error.h>
 #include <visfeat/core/common/threads.h>
 #include <visfeat/surface_fill.h>
 
@@ -9,6 +10,7 @@
 #include <algorithm>
 #include <limits>
 #include <memory>
+#include <string>
 
 namespace visfeat {
 
@@ -56,6 +58,38 @@ localTriangleCells(const pcl::PointCloud<PointT>& cloud,
     umbrellaTriangles(points, neighbours, k, parameters, threads);
   if (triangle_count)
     *triangle_count = triangles.size();
+  return rasterizeTriangles(grid, points, triangles, threads);
+}
+
+template <typename PointT>
+std::vector<CellCoord>
+organizedCells(const pcl::PointCloud<PointT>& cloud,
+               const GridSpec& grid,
+               const OrganizedTriangleParameters& parameters,
+               int threads,
+               std::size_t* triangle_count)
+{
+  if (cloud.height <= 1 ||
+      static_cast<std::size_t>(cloud.width) * cloud.height != cloud.size())
+    throw Error("the fill 'grid' needs an organized cloud (height > 1), got " +
+                std::to_string(cloud.width) + " x " + std::to_string(cloud.height));
+  std::vector<Eigen::Vector3d> points(cloud.size());
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  for (std::size_t i = 0; i < cloud.size(); ++i)
+    points[i] = pcl::isXYZFinite(cloud[i])
+                  ? Eigen::Vector3d(cloud[i].x, cloud[i].y, cloud[i].z)
+                  : Eigen::Vector3d(nan, nan, nan);
+  const Eigen::Vector3d origin =
+    cloud.sensor_origin_.template head<3>().template cast<double>();
+  std::vector<TriangleIndices> triangles =
+    organizedTriangles(points, static_cast<int>(cloud.width),
+                       static_cast<int>(cloud.height), origin, parameters);
+  if (triangle_count)
+    *triangle_count = triangles.size();
+  // rasterizeTriangles() refuses non-finite vertices: the triangles use finite ones
+  for (Eigen::Vector3d& p : points)
+    if (!p.allFinite())
+      p = origin;
   return rasterizeTriangles(grid, points, triangles, threads);
 }
 
@@ -127,6 +161,9 @@ pointsOnCells(const pcl::PointCloud<PointT>& cloud,
   template std::vector<visfeat::CellCoord> visfeat::localTriangleCells<T>(             \
     const pcl::PointCloud<T>&, const visfeat::GridSpec&,                               \
     const visfeat::LocalTriangleParameters&, int, std::size_t*);                       \
+  template std::vector<visfeat::CellCoord> visfeat::organizedCells<T>(                 \
+    const pcl::PointCloud<T>&, const visfeat::GridSpec&,                               \
+    const visfeat::OrganizedTriangleParameters&, int, std::size_t*);                   \
   template void visfeat::pointsOnCells<T>(                                             \
     const pcl::PointCloud<T>&, const visfeat::GridSpec&,                               \
     const std::vector<visfeat::CellCoord>&, std::vector<visfeat::OccupiedCell>&,       \

@@ -202,6 +202,7 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::chooseResolution(
   }
   const bool may_fill = surface_fill_ == SurfaceFill::kAuto ||
                         surface_fill_ == SurfaceFill::kLocalTriangles ||
+                        surface_fill_ == SurfaceFill::kOrganized ||
                         (surface_fill_ == SurfaceFill::kMesh && mesh_);
   const int from_density = run.resolution.resolution;
   if (may_fill && from_density < kTopologyResolution) {
@@ -244,6 +245,10 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::chooseFill(Run& run) const
   } else if (mesh_) {
     run.fill = SurfaceFill::kMesh;
     reason << "a mesh was given: its triangles rasterised";
+  } else if (surface_->height > 1) {
+    run.fill = SurfaceFill::kOrganized;
+    reason << "an organized cloud (" << surface_->width << " x " << surface_->height
+           << "): its pixel grid, cut at depth jumps";
   } else if (run.raised_for_fill ||
              (run.resolution.spacing > 0.0 && spacing_cells > kFillSpacingCells)) {
     run.fill = SurfaceFill::kLocalTriangles;
@@ -277,6 +282,9 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::fillCells(
   case SurfaceFill::kLocalTriangles:
     return localTriangleCells(surface, run.grid, local_triangles_,
                               run.visibility.threads);
+  case SurfaceFill::kOrganized:
+    return organizedCells(surface, run.grid, organized_triangles_,
+                          run.visibility.threads);
   default:
     return {};
   }
