@@ -1,6 +1,7 @@
 // The band from the surface: exact triangle rasterisation, the local Delaunay fill
 // between sparse points, the band's fill cells, and the estimator's choice of fill.
 
+#include <visfeat/core/band/crease_fill.h>
 #include <visfeat/core/band/local_triangles.h>
 #include <visfeat/core/band/triangle_cells.h>
 #include <visfeat/core/band/voxel_band.h>
@@ -308,6 +309,80 @@ TEST(SurfaceFillNames, RoundTrip)
   visfeat::SurfaceFill parsed = visfeat::SurfaceFill::kPoints;
   EXPECT_FALSE(visfeat::parseSurfaceFill("splats", parsed));
   EXPECT_EQ(parsed, visfeat::SurfaceFill::kPoints);
+}
+
+} // namespace
+
+namespace {
+
+/** Jittered points on two half-planes meeting at a right angle along the x axis: y >= 0
+ * in z = 0 and z >= 0 in y = 0 (cell units, spacing 3 cells). */
+std::vector<Eigen::Vector3d>
+rightAngleCrease(std::mt19937& rng)
+{
+  std::uniform_real_distribution<double> jitter(-0.8, 0.8);
+  std::vector<Eigen::Vector3d> points;
+  for (int i = 0; i < 14; ++i)
+    for (int j = 0; j < 7; ++j) {
+      const double x = 8.0 + 3.0 * i + jitter(rng),
+                   s = 0.5 + 3.0 * j + 0.6 * jitter(rng);
+      points.emplace_back(x, s, 0.0);
+      points.emplace_back(x + jitter(rng), 0.0, s);
+    }
+  return points;
+}
+
+TEST(CreaseFill, RebuildsACreaseSharp)
+{
+  std::mt19937 rng(9);
+  const std::vector<Eigen::Vector3d> raw = rightAngleCrease(rng);
+  // the crease at y = z = 20.5 in cell units, a grid of unit cells
+  std::vector<Eigen::Vector3d> points;
+  for (const Eigen::Vector3d& p : raw)
+    points.push_back(p + Eigen::Vector3d(0.0, 20.5, 20.5));
+  visfeat::GridSpec grid;
+  grid.origin = Eigen::Vector3d::Zero();
+  grid.cell_size = 1.0;
+  grid.dims = Eigen::Vector3i(64, 64, 64);
+  visfeat::LocalTriangleParameters parameters;
+  const int k = parameters.neighbours + 1;
+  const auto neighbours = nearest(points, k);
+  const auto triangles =
+    visfeat::umbrellaTriangles(points, neighbours, k, parameters, 1);
+  const auto normals = visfeat::tangentNormals(points, neighbours, k, 1);
+  // normals away from the crease are the faces' own
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const Eigen::Vector3d d = points[i] - Eigen::Vector3d(0.0, 20.5, 20.5);
+    if (std::min(d.y(), d.z()) > -1.0 && std::max(d.y(), d.z()) > 4.0) {
+      EXPECT_GT(std::abs(normals[i][d.y() > d.z() ? 2 : 1]), 0.99) << i;
+    }
+  }
+  // cells inside the right angle, off both faces (face cells have y or z = 20): the
+  // chords' wedge, which the rebuilt crease leaves out
+  auto wedge = [](const std::vector<CellCoord>& cells) {
+    std::size_t n = 0;
+    for (const CellCoord& c : cells)
+      if (c.x() > 12 && c.x() < 44 && c.y() >= 21 && c.z() >= 21)
+        ++n;
+    return n;
+  };
+  const auto sharp =
+    visfeat::creaseFillCells(grid, points, normals, triangles, 20.0, 2);
+  const auto plain =
+    visfeat::creaseFillCells(grid, points, normals, triangles, 180.0, 1);
+  EXPECT_EQ(plain, visfeat::rasterizeTriangles(grid, points, triangles, 1));
+  EXPECT_GT(wedge(plain), 25u) << "the chords fill the wedge";
+  EXPECT_LT(wedge(sharp), wedge(plain) / 4) << "the rebuilt crease does not";
+  // and the crease line itself is there: the cells of the corner column (y, z = 20)
+  std::set<Key> found;
+  for (const CellCoord& c : sharp)
+    found.insert(key(c));
+  int on_line = 0;
+  for (int x = 14; x < 42; ++x)
+    on_line += found.count({x, 20, 20}) > 0;
+  EXPECT_GE(on_line, 26);
+  EXPECT_EQ(sharp, visfeat::creaseFillCells(grid, points, normals, triangles, 20.0, 1))
+    << "thread count";
 }
 
 } // namespace

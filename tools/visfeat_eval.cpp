@@ -472,12 +472,12 @@ evaluate(const Settings& s, const std::string& name, double sigma)
 int
 run(int argc, char** argv)
 {
-  const vt::Arguments args(argc, argv,
-                           {"-models", "-noise", "-resolution", "-seed", "-opacity",
-                            "-min_radius", "-max_radius", "-threads", "-peers",
-                            "-cgal_max_points", "-quantiles", "-json", "-points",
-                            "-fill_edge", "-fill_neighbours", "-fill_votes"},
-                           {"-noise_mode", "-h", "--help"});
+  const vt::Arguments args(
+    argc, argv,
+    {"-models", "-noise", "-resolution", "-seed", "-opacity", "-min_radius",
+     "-max_radius", "-threads", "-peers", "-cgal_max_points", "-quantiles", "-json",
+     "-points", "-fill_edge", "-fill_neighbours", "-fill_votes", "-fill_crease"},
+    {"-noise_mode", "-h", "--help"});
   if (!args.ok())
     return fail(args.error());
   if (!args.positional().empty())
@@ -503,7 +503,8 @@ run(int argc, char** argv)
       !args.getInteger("-points", 0, 1LL << 31, s.points, error) ||
       !args.getReal("-fill_edge", 1.0, 10.0, s.fill.max_edge_spacings, error) ||
       !args.getInteger("-fill_neighbours", 4, 64, s.fill.neighbours, error) ||
-      !args.getInteger("-fill_votes", 1, 3, s.fill.min_votes, error))
+      !args.getInteger("-fill_votes", 1, 3, s.fill.min_votes, error) ||
+      !args.getReal("-fill_crease", 1.0, 180.0, s.fill.crease_degrees, error))
     return fail(error);
   s.set_resolution = args.has("-resolution");
   s.set_opacity = args.has("-opacity");

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <visfeat/core/band/crease_fill.h>
 #include <visfeat/core/common/error.h>
 #include <visfeat/core/common/threads.h>
 #include <visfeat/surface_fill.h>
@@ -58,7 +59,10 @@ localTriangleCells(const pcl::PointCloud<PointT>& cloud,
     umbrellaTriangles(points, neighbours, k, parameters, threads);
   if (triangle_count)
     *triangle_count = triangles.size();
-  return rasterizeTriangles(grid, points, triangles, threads);
+  if (parameters.crease_degrees >= 180.0)
+    return rasterizeTriangles(grid, points, triangles, threads);
+  return creaseFillCells(grid, points, tangentNormals(points, neighbours, k, threads),
+                         triangles, parameters.crease_degrees, threads);
 }
 
 template <typename PointT>

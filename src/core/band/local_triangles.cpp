@@ -116,6 +116,7 @@ LocalTriangleParameters::validate() const
   checkRange("neighbours", neighbours, kNeighboursRange, "points");
   checkRange("max_gap_degrees", max_gap_degrees, kMaxGapRange, "degrees");
   checkRange("max_edge_spacings", max_edge_spacings, kMaxEdgeRange, "local spacings");
+  checkRange("crease_degrees", crease_degrees, kCreaseDegreesRange, "degrees");
 }
 
 std::vector<TriangleIndices>

@@ -26,6 +26,11 @@ struct LocalTriangleParameters
    * holes of the scan. */
   double max_edge_spacings = 3.5;
   static constexpr ParameterRange<double> kMaxEdgeRange{1.0, 10.0};
+  /** \brief Triangles whose corners' tangent planes differ by more than this (degrees)
+   * lie across a crease and are rebuilt sharp (creaseFillCells()); 180: off, every
+   * triangle rasterised as it is. */
+  double crease_degrees = 20.0;
+  static constexpr ParameterRange<double> kCreaseDegreesRange{1.0, 180.0};
   /** \brief A triangle is kept when at least this many of its 3 corners find it
    * Delaunay around themselves: 2 drops the chords that only one corner's tangent
    * plane allows (across creases, where the planes disagree). */
