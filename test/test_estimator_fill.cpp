@@ -104,6 +104,27 @@ TEST(EstimatorFill, SparseCloudsAreFilledAtTheTopologyResolution)
   }
 }
 
+TEST(EstimatorFill, FiveTimesTheDensityOnOneFaceChangesNothing)
+{
+  // one face 5 times denser than the others: the median spacing is the dense face's,
+  // the sparse faces are filled all the same
+  const syn::CadModel model =
+    syn::rotated(syn::cadModelByName("box_with_hole"), syn::randomRotation(21));
+  syn::SamplingOptions options;
+  options.count = 40000;
+  options.seed = 21;
+  options.face_density = syn::denseFace(model, 0, 5.0);
+  Estimator est;
+  est.setInputCloud(cloudOf(syn::sampleCadModel(model, options)));
+  est.setResolution(0);
+  Output out;
+  est.compute(out);
+  ASSERT_EQ(est.getErrorMessage(), "");
+  EXPECT_EQ(est.getSurfaceFillUsed(), visfeat::SurfaceFill::kLocalTriangles);
+  EXPECT_EQ(counts(est), (std::array<std::size_t, 4>{8, 14, 7, 0}));
+  EXPECT_TRUE(est.getWarnings().empty()) << est.getWarnings().front();
+}
+
 TEST(EstimatorFill, APointsOnlyBandOfASparseCloudWarns)
 {
   const syn::CadModel model =
