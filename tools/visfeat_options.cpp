@@ -214,7 +214,7 @@ readValues(const Arguments& args, Options& opt, std::string& error)
       !integer("-fill_votes", Fill::kMinVotesRange, opt.fill_triangles.min_votes))
     return false;
   if (args.has("-fill") && !visfeat::parseSurfaceFill(args.value("-fill"), opt.fill)) {
-    error = "-fill expects auto, points, triangles or mesh, got '" +
+    error = "-fill expects auto, points, triangles, grid or mesh, got '" +
             args.value("-fill") + "'";
     return false;
   }

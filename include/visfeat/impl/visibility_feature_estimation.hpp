@@ -267,7 +267,9 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::chooseFill(Run& run) const
   // point spacings (unless set), as its neighbours lie that far apart.
   if (run.fill != SurfaceFill::kPoints && !point_feature_distance_ &&
       spacing_cells > 1.0)
-    run.segmentation.point_feature_distance *= spacing_cells;
+    run.segmentation.point_feature_distance =
+      std::min(run.segmentation.point_feature_distance * spacing_cells,
+               SegmentationParameters::kPointFeatureDistanceRange.max);
 }
 
 template <typename PointInT, typename PointOutT>
