@@ -165,16 +165,7 @@ creaseFillCells(const GridSpec& grid,
     all.push_back(grid.linearKey(cell));
   for (std::vector<std::uint64_t>& chunk : keys)
     all.insert(all.end(), chunk.begin(), chunk.end());
-  std::sort(all.begin(), all.end());
-  all.erase(std::unique(all.begin(), all.end()), all.end());
-  std::vector<CellCoord> out(all.size());
-  const auto nx = static_cast<std::uint64_t>(grid.dims.x());
-  const auto ny = static_cast<std::uint64_t>(grid.dims.y());
-  for (std::size_t i = 0; i < all.size(); ++i)
-    out[i] =
-      CellCoord(static_cast<int>(all[i] % nx), static_cast<int>((all[i] / nx) % ny),
-                static_cast<int>(all[i] / (nx * ny)));
-  return out;
+  return cellsOfKeys(grid, std::move(all));
 }
 
 } // namespace visfeat

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include <utility>
 
 namespace visfeat {
 
@@ -244,16 +245,17 @@ rasterizeTriangles(const GridSpec& grid,
     all.insert(all.end(), chunk.begin(), chunk.end());
     chunk = {};
   }
-  std::sort(all.begin(), all.end());
-  all.erase(std::unique(all.begin(), all.end()), all.end());
-  std::vector<CellCoord> out(all.size());
-  const auto nx = static_cast<std::uint64_t>(grid.dims.x());
-  const auto ny = static_cast<std::uint64_t>(grid.dims.y());
-  for (std::size_t i = 0; i < all.size(); ++i) {
-    const std::uint64_t key = all[i];
-    out[i] = CellCoord(static_cast<int>(key % nx), static_cast<int>((key / nx) % ny),
-                       static_cast<int>(key / (nx * ny)));
-  }
+  return cellsOfKeys(grid, std::move(all));
+}
+
+std::vector<CellCoord>
+cellsOfKeys(const GridSpec& grid, std::vector<std::uint64_t> keys)
+{
+  std::sort(keys.begin(), keys.end());
+  keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+  std::vector<CellCoord> out(keys.size());
+  for (std::size_t i = 0; i < keys.size(); ++i)
+    out[i] = grid.cellOfKey(keys[i]);
   return out;
 }
 

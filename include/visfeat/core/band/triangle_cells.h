@@ -33,6 +33,11 @@ void appendTriangleCells(const Eigen::Vector3d& a,
                          const Eigen::Vector3i& dims,
                          std::vector<CellCoord>& out);
 
+/** \brief The cells of linear keys (GridSpec::linearKey), each once, in key order:
+ * the keys sorted and made unique, then decoded. */
+std::vector<CellCoord> cellsOfKeys(const GridSpec& grid,
+                                   std::vector<std::uint64_t> keys);
+
 /** \brief A triangle as three indices into a vertex array. */
 using TriangleIndices = std::array<std::uint32_t, 3>;
 

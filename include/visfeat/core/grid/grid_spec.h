@@ -72,6 +72,15 @@ struct GridSpec
     return visfeat::linearKey(c, dims);
   }
 
+  /** \brief The cell of a linear key (the inverse of linearKey()). */
+  CellCoord cellOfKey(std::uint64_t key) const
+  {
+    const auto nx = static_cast<std::uint64_t>(dims.x());
+    const auto ny = static_cast<std::uint64_t>(dims.y());
+    return CellCoord(static_cast<int>(key % nx), static_cast<int>((key / nx) % ny),
+                     static_cast<int>(key / (nx * ny)));
+  }
+
   /** \brief A world point in cell units: (p - origin) / cell_size, so that cell
    * (i, j, k) spans [i, i+1) x [j, j+1) x [k, k+1). */
   Eigen::Vector3d toCellUnits(const Eigen::Vector3d& p) const
