@@ -1,6 +1,7 @@
 #pragma once
 
 #include <visfeat/core/band/crease_fill.h>
+#include <visfeat/core/band/crease_strips.h>
 #include <visfeat/core/common/error.h>
 #include <visfeat/core/common/threads.h>
 #include <visfeat/surface_fill.h>
@@ -61,8 +62,19 @@ localTriangleCells(const pcl::PointCloud<PointT>& cloud,
     *triangle_count = triangles.size();
   if (parameters.crease_degrees >= 180.0)
     return rasterizeTriangles(grid, points, triangles, threads);
-  return creaseFillCells(grid, points, tangentNormals(points, neighbours, k, threads),
-                         triangles, parameters.crease_degrees, threads);
+  const std::vector<TangentPlane> planes =
+    tangentPlanes(points, neighbours, k, threads);
+  std::vector<CellCoord> cells = creaseFillCells(grid, points, planes, triangles,
+                                                 parameters.crease_degrees, threads);
+  const std::vector<CellCoord> strips = creaseStripCells(
+    grid, points, planes, neighbours, k, parameters.crease_degrees, threads);
+  std::vector<std::uint64_t> keys;
+  keys.reserve(cells.size() + strips.size());
+  for (const CellCoord& c : cells)
+    keys.push_back(grid.linearKey(c));
+  for (const CellCoord& c : strips)
+    keys.push_back(grid.linearKey(c));
+  return cellsOfKeys(grid, std::move(keys));
 }
 
 template <typename PointT>

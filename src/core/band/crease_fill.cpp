@@ -2,10 +2,11 @@
 #include <visfeat/core/common/error.h>
 #include <visfeat/core/common/threads.h>
 
-#include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
+#include <Eigen/LU>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <utility>
@@ -16,14 +17,6 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-/** Neighbours of the first plane fit (nearest first). */
-constexpr std::size_t kPlaneNeighbours = 8;
-
-/** The refit keeps the neighbours closer to the first plane than this share of the
- * farthest one's distance: across a crease the neighbours of the other face are the
- * far ones. */
-constexpr double kPlaneInlierShare = 0.5;
-
 /** Sample step along a crease triangle (cells): several samples a cell, so every cell
  * the rebuilt faces cross receives one. */
 constexpr double kCreaseSampleCells = 0.3;
@@ -31,78 +24,126 @@ constexpr double kCreaseSampleCells = 0.3;
 /** Points and triangles per chunk of the parallel loops. */
 constexpr std::size_t kPerChunk = 512;
 
-Eigen::Vector3d
-planeNormal(const Eigen::Vector3d& p, const std::vector<Eigen::Vector3d>& others)
+/** A lift longer than this share of the triangle's longest side means the corner planes
+ * do not describe one crease (nearly parallel planes, a wrong normal): the sample falls
+ * back to the nearest plane. */
+constexpr double kMaxLiftShare = 1.0;
+
+/** Below this cosine between an edge of the triangle and a corner's plane, the other
+ * corner lies too close to that plane to tell which side of the crease is solid. */
+constexpr double kMinSideCosine = 0.05;
+
+/** The corner planes of one crease triangle as a wedge: each plane oriented so that the
+ * triangle's corners off it lie on its negative side, so the chord lies inside the
+ * wedge (both sides of a convex crease or both of a concave one alike) and the surface
+ * is the wedge's boundary. */
+struct CreaseWedge
 {
-  Eigen::Vector3d mean = p;
-  for (const Eigen::Vector3d& q : others)
-    mean += q;
-  mean /= static_cast<double>(others.size() + 1);
-  Eigen::Matrix3d cov = (p - mean) * (p - mean).transpose();
-  for (const Eigen::Vector3d& q : others)
-    cov += (q - mean) * (q - mean).transpose();
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(cov);
-  return solver.eigenvectors().col(0).normalized();
+  std::array<Eigen::Vector3d, 3> normal{
+    Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
+  std::array<Eigen::Vector3d, 3> origin{
+    Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
+  int planes = 0;
+  Eigen::Vector3d out = Eigen::Vector3d::Zero(); ///< unit, out of the wedge
+};
+
+/** The wedge of a triangle's corner planes: the corner pair whose normals differ most,
+ * plus the third corner when its plane differs from both by more than `agree` (cosine);
+ * planes = 0 when the sides cannot be told apart (see kMinSideCosine). */
+CreaseWedge
+creaseWedge(const std::vector<TangentPlane>& planes,
+            const TriangleIndices& tri,
+            double agree)
+{
+  auto normalOf = [&](int corner) -> const Eigen::Vector3d& {
+    return planes[tri[std::size_t(corner)]].normal;
+  };
+  CreaseWedge wedge;
+  int a = 0, b = 1;
+  double lowest = 2.0;
+  for (int i = 0; i < 3; ++i)
+    for (int j = i + 1; j < 3; ++j) {
+      const Eigen::Vector3d& ni = normalOf(i);
+      const Eigen::Vector3d& nj = normalOf(j);
+      if (ni.squaredNorm() == 0.0 || nj.squaredNorm() == 0.0)
+        continue;
+      const double c = std::abs(ni.dot(nj));
+      if (c < lowest) {
+        lowest = c;
+        a = i;
+        b = j;
+      }
+    }
+  if (lowest >= agree)
+    return wedge;
+  const std::array<int, 3> used{a, b, 3 - a - b};
+  const Eigen::Vector3d& n3 = normalOf(used[2]);
+  const bool third = n3.squaredNorm() > 0.0 && std::abs(n3.dot(normalOf(a))) < agree &&
+                     std::abs(n3.dot(normalOf(b))) < agree;
+  const int count = third ? 3 : 2;
+  for (int p = 0; p < count; ++p) {
+    const TangentPlane& plane = planes[tri[std::size_t(used[std::size_t(p)])]];
+    const Eigen::Vector3d& n = plane.normal;
+    const Eigen::Vector3d& o = plane.point;
+    int sign = 0;
+    for (int q = 0; q < count; ++q) {
+      if (q == p)
+        continue;
+      const Eigen::Vector3d d =
+        planes[tri[std::size_t(used[std::size_t(q)])]].point - o;
+      const double side = n.dot(d);
+      if (std::abs(side) < kMinSideCosine * d.norm())
+        return CreaseWedge{};
+      const int s = side < 0.0 ? 1 : -1;
+      if (sign != 0 && s != sign)
+        return CreaseWedge{}; // a saddle: no wedge holds the chord
+      sign = s;
+    }
+    wedge.normal[std::size_t(p)] = double(sign) * n;
+    wedge.origin[std::size_t(p)] = o;
+    wedge.out += wedge.normal[std::size_t(p)];
+  }
+  if (wedge.out.norm() < 1e-6)
+    return CreaseWedge{};
+  wedge.out.normalize();
+  for (int p = 0; p < count; ++p)
+    if (wedge.normal[std::size_t(p)].dot(wedge.out) < kMinSideCosine)
+      return CreaseWedge{};
+  wedge.planes = count;
+  return wedge;
+}
+
+/** How far x moves along wedge.out to reach the wedge's boundary: the first plane it
+ * crosses (the boundary of the intersection of the negative half-spaces). */
+double
+liftOntoWedge(const CreaseWedge& wedge, const Eigen::Vector3d& x)
+{
+  double t = std::numeric_limits<double>::infinity();
+  for (int p = 0; p < wedge.planes; ++p) {
+    const Eigen::Vector3d& n = wedge.normal[std::size_t(p)];
+    t = std::min(t, -n.dot(x - wedge.origin[std::size_t(p)]) / n.dot(wedge.out));
+  }
+  return t;
 }
 
 } // namespace
 
-std::vector<Eigen::Vector3d>
-tangentNormals(const std::vector<Eigen::Vector3d>& points,
-               const std::vector<std::uint32_t>& neighbours,
-               int k,
-               int threads)
-{
-  if (k < 0 || neighbours.size() != points.size() * static_cast<std::size_t>(k))
-    throw Error("tangentNormals: the neighbour table does not match the points");
-  std::vector<Eigen::Vector3d> normals(points.size(), Eigen::Vector3d::Zero());
-  parallelFor(
-    points.size(), threads, kPerChunk, [&](std::size_t begin, std::size_t end) {
-      std::vector<Eigen::Vector3d> near;
-      for (std::size_t i = begin; i < end; ++i) {
-        const Eigen::Vector3d& p = points[i];
-        if (!p.allFinite())
-          continue;
-        near.clear();
-        for (int j = 0; j < k && near.size() < kPlaneNeighbours; ++j) {
-          const std::uint32_t q = neighbours[i * static_cast<std::size_t>(k) + j];
-          if (q < points.size() && q != i && points[q].allFinite() && points[q] != p)
-            near.push_back(points[q]);
-        }
-        if (near.size() < 2)
-          continue;
-        Eigen::Vector3d n = planeNormal(p, near);
-        double far = 0.0;
-        for (const Eigen::Vector3d& q : near)
-          far = std::max(far, std::abs(n.dot(q - p)));
-        std::vector<Eigen::Vector3d> inliers;
-        for (const Eigen::Vector3d& q : near)
-          if (std::abs(n.dot(q - p)) <= kPlaneInlierShare * far)
-            inliers.push_back(q);
-        if (inliers.size() >= 3 && inliers.size() < near.size())
-          n = planeNormal(p, inliers);
-        normals[i] = n;
-      }
-    });
-  return normals;
-}
-
 std::vector<CellCoord>
 creaseFillCells(const GridSpec& grid,
                 const std::vector<Eigen::Vector3d>& points,
-                const std::vector<Eigen::Vector3d>& normals,
+                const std::vector<TangentPlane>& planes,
                 const std::vector<TriangleIndices>& triangles,
                 double crease_degrees,
                 int threads)
 {
-  if (normals.size() != points.size())
-    throw Error("creaseFillCells: one normal per point is needed");
+  if (planes.size() != points.size())
+    throw Error("creaseFillCells: one tangent plane per point is needed");
   const double agree = std::cos(std::min(crease_degrees, 180.0) * kPi / 180.0);
   auto isCrease = [&](const TriangleIndices& t) {
     for (int a = 0; a < 3; ++a)
       for (int b = a + 1; b < 3; ++b) {
-        const Eigen::Vector3d& na = normals[t[static_cast<std::size_t>(a)]];
-        const Eigen::Vector3d& nb = normals[t[static_cast<std::size_t>(b)]];
+        const Eigen::Vector3d& na = planes[t[static_cast<std::size_t>(a)]].normal;
+        const Eigen::Vector3d& nb = planes[t[static_cast<std::size_t>(b)]].normal;
         if (na.squaredNorm() > 0.0 && nb.squaredNorm() > 0.0 &&
             std::abs(na.dot(nb)) < agree)
           return true;
@@ -119,7 +160,8 @@ creaseFillCells(const GridSpec& grid,
   }
   std::vector<CellCoord> cells = rasterizeTriangles(grid, points, flat, threads);
 
-  // crease triangles: samples moved onto the nearest corner plane
+  // crease triangles: samples lifted onto the corners' wedge, else moved onto the
+  // nearest corner plane
   std::vector<std::vector<std::uint64_t>> keys((crease.size() + kPerChunk - 1) /
                                                kPerChunk);
   parallelFor(keys.size(), threads, 1, [&](std::size_t first, std::size_t last) {
@@ -134,17 +176,28 @@ creaseFillCells(const GridSpec& grid,
           std::max({(b - a).norm(), (d - b).norm(), (a - d).norm()}) / grid.cell_size;
         const int n =
           std::max(1, static_cast<int>(std::ceil(longest / kCreaseSampleCells)));
+        const CreaseWedge wedge = creaseWedge(planes, tri, agree);
+        const double max_lift = kMaxLiftShare * longest * grid.cell_size;
         for (int i = 0; i <= n; ++i)
           for (int j = 0; i + j <= n; ++j) {
             const double u = double(i) / n, v = double(j) / n;
             const Eigen::Vector3d x = a + u * (b - a) + v * (d - a);
+            if (wedge.planes > 0) {
+              const double t = liftOntoWedge(wedge, x);
+              if (std::abs(t) <= max_lift) {
+                const CellCoord cell = grid.cellOf(x + t * wedge.out);
+                if (grid.contains(cell))
+                  keys[c].push_back(grid.linearKey(cell));
+                continue;
+              }
+            }
             double best = std::numeric_limits<double>::infinity();
             Eigen::Vector3d moved = x;
             for (const std::uint32_t corner : tri) {
-              const Eigen::Vector3d& normal = normals[corner];
+              const Eigen::Vector3d& normal = planes[corner].normal;
               if (normal.squaredNorm() == 0.0)
                 continue;
-              const double off = normal.dot(x - points[corner]);
+              const double off = normal.dot(x - planes[corner].point);
               if (std::abs(off) < best) {
                 best = std::abs(off);
                 moved = x - off * normal;

@@ -1,0 +1,47 @@
+#pragma once
+
+#include <Eigen/Core>
+
+#include <cstdint>
+#include <vector>
+
+namespace visfeat {
+
+/** \brief A point's tangent plane: its unit normal (any sign; zero when it could not be
+ * fitted) and the point moved onto the plane. */
+struct TangentPlane
+{
+  Eigen::Vector3d normal = Eigen::Vector3d::Zero();
+  /** \brief The point projected onto the plane (world units): on a face the point
+   * itself; beside a crease, where the plane is fitted to the point's face without it,
+   * its foot on that plane. */
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();
+};
+
+/** \brief Per point, the plane of its own face, fitted so that a point beside a crease
+ * or a corner is not pulled towards the faces across it.
+ *
+ * Robust fit over the point p and its kPlaneNeighbours nearest distinct neighbours
+ * (rows of `neighbours`, k per point, nearest first, as umbrellaTriangles() reads
+ * them): among the planes through three of these points, the one whose worse of (p's
+ * distance, the kPlaneSupport-th smallest distance of the other points) is least, so
+ * that it holds p and a few more points exactly on noise-free faces; then least
+ * squares through its inliers (within kInlierBand times that score, at least a
+ * thousandth of the mean neighbour distance). Least median of squares would need half
+ * the neighbours on p's face; beside an acute crease or at a corner most of the nearest
+ * ones lie on the other faces.
+ *
+ * \param[in] points positions (world units); a non-finite point gets a zero normal
+ * \param[in] neighbours k indices per point, row i = neighbours[i * k, (i + 1) * k),
+ *            nearest first; an index >= points.size() (or the point itself) is skipped
+ * \param[in] k neighbours per point in `neighbours`
+ * \param[in] threads 0 = all available; the result does not depend on it
+ * \return one plane per point; a zero normal for a point with fewer than 2 usable
+ * neighbours.
+ * \throws visfeat::Error for a neighbour table of the wrong size. */
+std::vector<TangentPlane> tangentPlanes(const std::vector<Eigen::Vector3d>& points,
+                                        const std::vector<std::uint32_t>& neighbours,
+                                        int k,
+                                        int threads);
+
+} // namespace visfeat

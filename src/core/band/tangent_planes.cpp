@@ -1,0 +1,191 @@
+#include <visfeat/core/band/tangent_planes.h>
+#include <visfeat/core/common/error.h>
+#include <visfeat/core/common/threads.h>
+
+#include <Eigen/Eigenvalues>
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <utility>
+
+namespace visfeat {
+
+namespace {
+
+/** Neighbours a point's plane is fitted to (nearest first). */
+constexpr std::size_t kPlaneNeighbours = 10;
+
+/** The noise scale is set by planes that hold this many points besides the three that
+ * define them: beside a box's corner a point's 10 nearest neighbours can hold only 3
+ * of its own face. */
+constexpr std::size_t kPlaneSupport = 1;
+
+/** Inliers lie within this many times the noise scale of a plane. */
+constexpr double kInlierBand = 4.0;
+
+/** The inlier band is at least this share of the mean neighbour distance wide, so that
+ * on noise-free faces round-off does not drop neighbours. */
+constexpr double kMinInlierShare = 1e-3;
+
+/** Candidate planes whose defining points are closer to collinear than this (sine of
+ * the angle at the first) are skipped: their normal is noise. */
+constexpr double kMinTripleSine = 0.1;
+
+/** Points per chunk of the parallel loop. */
+constexpr std::size_t kPerChunk = 512;
+
+/** Least squares plane of the points: the unit normal and the centroid. */
+TangentPlane
+leastSquaresPlane(const std::vector<Eigen::Vector3d>& points)
+{
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+  for (const Eigen::Vector3d& q : points)
+    mean += q;
+  mean /= static_cast<double>(points.size());
+  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+  for (const Eigen::Vector3d& q : points)
+    cov += (q - mean) * (q - mean).transpose();
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(cov);
+  TangentPlane plane;
+  plane.normal = solver.eigenvectors().col(0).normalized();
+  plane.point = mean;
+  return plane;
+}
+
+/** A plane through three points of a set. */
+struct Candidate
+{
+  Eigen::Vector3d normal; ///< unit
+  std::array<std::size_t, 3> through;
+};
+
+/** The candidate planes through three points of `set`, the nearly collinear triples
+ * skipped. */
+std::vector<Candidate>
+candidatePlanes(const std::vector<Eigen::Vector3d>& set)
+{
+  std::vector<Candidate> planes;
+  const std::size_t n = set.size();
+  for (std::size_t a = 0; a < n; ++a)
+    for (std::size_t b = a + 1; b < n; ++b)
+      for (std::size_t c = b + 1; c < n; ++c) {
+        const Eigen::Vector3d u = set[b] - set[a], v = set[c] - set[a];
+        const Eigen::Vector3d cross = u.cross(v);
+        if (cross.norm() >= kMinTripleSine * u.norm() * v.norm())
+          planes.push_back({cross.normalized(), {a, b, c}});
+      }
+  return planes;
+}
+
+/** The robust plane of set[0] (the point) and the rest (its neighbours). */
+TangentPlane
+robustPlane(const std::vector<Eigen::Vector3d>& set)
+{
+  const Eigen::Vector3d& p = set[0];
+  const std::size_t n = set.size();
+  double mean_distance = 0.0;
+  for (std::size_t j = 1; j < n; ++j)
+    mean_distance += (set[j] - p).norm();
+  mean_distance /= static_cast<double>(n - 1);
+  const auto candidates = candidatePlanes(set);
+  if (candidates.empty()) // all nearly collinear
+    return leastSquaresPlane(set);
+
+  // the scale: the least, over the planes, of the worse of p's distance and the
+  // kPlaneSupport-th smallest distance of a point besides the three that define it
+  // (with p, at least kPlaneSupport + 3 points within it)
+  std::vector<double> residual;
+  residual.reserve(n);
+  double scale = std::numeric_limits<double>::infinity();
+  for (const Candidate& plane : candidates) {
+    const Eigen::Vector3d& origin = set[plane.through[0]];
+    residual.clear();
+    for (std::size_t j = 1; j < n; ++j)
+      if (j != plane.through[0] && j != plane.through[1] && j != plane.through[2])
+        residual.push_back(std::abs(plane.normal.dot(set[j] - origin)));
+    if (residual.size() < kPlaneSupport)
+      continue;
+    const auto at = residual.begin() + static_cast<std::ptrdiff_t>(kPlaneSupport - 1);
+    std::nth_element(residual.begin(), at, residual.end());
+    scale = std::min(scale, std::max(std::abs(plane.normal.dot(p - origin)), *at));
+  }
+  if (!std::isfinite(scale))
+    return leastSquaresPlane(set);
+  const double band = std::max(kInlierBand * scale, kMinInlierShare * mean_distance);
+  // the plane through p (within the band) with the most points within the band
+  std::size_t best_count = 0;
+  double best_sum = std::numeric_limits<double>::infinity();
+  Eigen::Vector3d best_normal = candidates.front().normal;
+  for (const Candidate& plane : candidates) {
+    const Eigen::Vector3d& normal = plane.normal;
+    const Eigen::Vector3d& origin = set[plane.through[0]];
+    if (std::abs(normal.dot(p - origin)) > band)
+      continue;
+    std::size_t count = 0;
+    double sum = 0.0;
+    for (const Eigen::Vector3d& q : set) {
+      const double r = std::abs(normal.dot(q - origin));
+      if (r <= band) {
+        ++count;
+        sum += r;
+      }
+    }
+    if (count > best_count || (count == best_count && sum < best_sum)) {
+      best_count = count;
+      best_sum = sum;
+      best_normal = normal;
+    }
+  }
+  // least squares through the inliers of the best plane (through p)
+  std::vector<Eigen::Vector3d> inliers;
+  for (const Eigen::Vector3d& q : set)
+    if (std::abs(best_normal.dot(q - p)) <= 2.0 * band)
+      inliers.push_back(q);
+  TangentPlane plane;
+  if (inliers.size() >= 3) {
+    plane = leastSquaresPlane(inliers);
+  } else {
+    plane.normal = best_normal;
+    plane.point = p;
+  }
+  plane.point = p - plane.normal * plane.normal.dot(p - plane.point);
+  return plane;
+}
+
+} // namespace
+
+std::vector<TangentPlane>
+tangentPlanes(const std::vector<Eigen::Vector3d>& points,
+              const std::vector<std::uint32_t>& neighbours,
+              int k,
+              int threads)
+{
+  if (k < 0 || neighbours.size() != points.size() * static_cast<std::size_t>(k))
+    throw Error("tangentPlanes: the neighbour table does not match the points");
+  std::vector<TangentPlane> planes(points.size());
+  parallelFor(
+    points.size(), threads, kPerChunk, [&](std::size_t begin, std::size_t end) {
+      std::vector<Eigen::Vector3d> set;
+      for (std::size_t i = begin; i < end; ++i) {
+        const Eigen::Vector3d& p = points[i];
+        planes[i].point = p;
+        if (!p.allFinite())
+          continue;
+        set.assign(1, p);
+        for (int j = 0; j < k && set.size() <= kPlaneNeighbours; ++j) {
+          const std::uint32_t q = neighbours[i * static_cast<std::size_t>(k) + j];
+          if (q < points.size() && q != i && points[q].allFinite() && points[q] != p)
+            set.push_back(points[q]);
+        }
+        if (set.size() < 3)
+          continue;
+        planes[i] = robustPlane(set);
+      }
+    });
+  return planes;
+}
+
+} // namespace visfeat
