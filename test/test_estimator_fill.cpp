@@ -199,6 +199,27 @@ TEST(EstimatorFill, AMeshIsRasterisedDirectly)
   EXPECT_LT(est.getVoxelBand().size(), mesh_cells / 2);
 }
 
+TEST(EstimatorFill, AMeshGetsTheTopologyResolutionWhateverItsPointsDensity)
+{
+  // 1,000,000 points on the mesh (the tool samples that many) support about 350 cells;
+  // the mesh's band does not need them, and the topology needs 256
+  const syn::CadModel model =
+    syn::rotated(syn::cadModelByName("cube"), syn::randomRotation(6));
+  auto mesh = std::make_shared<visfeat::SurfaceMesh>(
+    syn::tessellateCadModel(model, 0.05 * syn::cellSize(model, 256)).mesh);
+  Estimator est;
+  est.setInputCloud(sparseCloud(model, 1000000, 6));
+  est.setInputMesh(mesh);
+  est.setResolution(0);
+  Output out;
+  est.compute(out);
+  ASSERT_EQ(est.getErrorMessage(), "");
+  const visfeat::ResolutionEstimate& r = est.getResolutionEstimate();
+  EXPECT_EQ(r.resolution, visfeat::kTopologyResolution);
+  EXPECT_NE(r.reason.find("lowered to 256"), std::string::npos) << r.reason;
+  EXPECT_EQ(counts(est), (std::array<std::size_t, 4>{8, 12, 6, 0}));
+}
+
 TEST(EstimatorFill, TheMeshFillNeedsAMesh)
 {
   Estimator est;

@@ -118,8 +118,11 @@ public:
   /** \brief Cells along the longest side of the bounding box of the finite points of
    * the search surface. Default GridSpec::kDefaultResolution (256); range
    * GridSpec::kResolutionRange ([4, 8192]) or kAutomaticResolution (0): two point
-   * spacings per cell (estimateResolution(); what was chosen and why is in
-   * getResolutionEstimate() after compute()). Features must be many cells apart
+   * spacings per cell (estimateResolution()), raised to kTopologyResolution (256) where
+   * the band is filled between the points (at most kMaxFillCellsPerSpacing cells a
+   * spacing), and kTopologyResolution for a mesh (setInputMesh()) whatever the density
+   * of its points; what was chosen and why is in getResolutionEstimate() after
+   * compute(). Features must be many cells apart
    * (about 2 min_radius): 256 for parts whose faces are >= 1/10 of their size, 512 for
    * finer detail; the point spacing must stay below ~0.7 cell. Memory grows with the
    * cube (setMemoryLimit()). */
