@@ -41,6 +41,24 @@ const char* const kProgram = "visfeat";
 
 using vt::Estimator;
 
+/** \brief A message of the library in the tool's terms: its setters become the
+ * options that set them. */
+std::string
+inToolTerms(std::string message)
+{
+  static const std::pair<const char*, const char*> kTerms[] = {
+    {"call setInputMesh() first",
+     "give a mesh (.obj, .off, or .ply with faces) as input"},
+    {"setResolution()", "-resolution"},
+    {"setSurfaceFill()", "-fill"},
+  };
+  for (const auto& [library, tool] : kTerms)
+    for (std::size_t at = message.find(library); at != std::string::npos;
+         at = message.find(library, at + std::char_traits<char>::length(tool)))
+      message.replace(at, std::char_traits<char>::length(library), tool);
+  return message;
+}
+
 /** \brief Progress of the visibility map on stderr: only after the first 2 s, at most
  * every 0.5 s; one line rewritten with \r on a terminal, plain lines otherwise. The
  * callback may be called from several threads at once. */
@@ -284,7 +302,7 @@ compute(Estimator& estimator,
       setVerbosityLevel(level);
       progress.finish();
       print_info("\n");
-      error = e.what();
+      error = inToolTerms(e.what());
       return false;
     }
     setVerbosityLevel(level);
@@ -292,7 +310,7 @@ compute(Estimator& estimator,
   progress.finish();
   if (result.empty()) {
     print_info("\n");
-    const std::string& why = estimator.getErrorMessage();
+    const std::string why = inToolTerms(estimator.getErrorMessage());
     error =
       "'" + opt.input + "': " + (why.empty() ? std::string("computation failed") : why);
     return false;
@@ -313,13 +331,15 @@ printSummary(const Estimator& estimator, const vt::Options& opt)
   if (opt.resolution == 0) {
     print_info("Resolution ");
     print_value("%d", resolution.resolution);
-    print_info(" chosen: %s; -resolution overrides\n", resolution.reason.c_str());
+    print_info(" chosen: %s; -resolution overrides\n",
+               inToolTerms(resolution.reason).c_str());
   }
   print_info("Band from ");
   print_value("%s", visfeat::surfaceFillName(estimator.getSurfaceFillUsed()));
-  print_info(": %s; -fill overrides\n", estimator.getSurfaceFillReason().c_str());
+  print_info(": %s; -fill overrides\n",
+             inToolTerms(estimator.getSurfaceFillReason()).c_str());
   for (const std::string& note : estimator.getNotes())
-    print_info("Note: %s\n", note.c_str());
+    print_info("Note: %s\n", inToolTerms(note).c_str());
   print_info("Grid: origin (");
   print_value("%g %g %g", grid.origin.x(), grid.origin.y(), grid.origin.z());
   print_info("), cell ");
@@ -366,8 +386,10 @@ printSummary(const Estimator& estimator, const vt::Options& opt)
   print_info(" edges, ");
   print_value("%zu", counts[3]);
   print_info(" faces\n");
+  // warnings go to stderr: what stdout holds comes first, also when it is a pipe
+  std::fflush(stdout);
   for (const std::string& warning : estimator.getWarnings())
-    print_warn("Warning: %s\n", warning.c_str());
+    print_warn("Warning: %s\n", inToolTerms(warning).c_str());
 }
 
 int
