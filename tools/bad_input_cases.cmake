@@ -43,6 +43,8 @@ set(VISFEAT_BAD_INPUT_CASES
   "graph_bad_extension|must have the extension .dot, .gv or .json"
   "voxels_same_as_output|the -voxels file must differ"
   "voxels_removed_on_failure|-resolution must be in&&got 0"
+  "stl_truncated|not a valid STL mesh: an ASCII STL without 'endsolid'"
+  "stl_garbage|not a valid STL mesh: neither a binary STL"
   "off_garbage|not an OFF file"
   "off_short|the file ends after 3 of 8 vertices"
   "off_bad_index|vertex index 9 out of range"

@@ -48,7 +48,7 @@ inToolTerms(std::string message)
 {
   static const std::pair<const char*, const char*> kTerms[] = {
     {"call setInputMesh() first",
-     "give a mesh (.obj, .off, or .ply with faces) as input"},
+     "give a mesh (.obj, .off, .stl, or .ply with faces) as input"},
     {"setResolution()", "-resolution"},
     {"setSurfaceFill()", "-fill"},
   };

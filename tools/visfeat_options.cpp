@@ -60,7 +60,8 @@ switchOptions()
 void
 printHelp(const char* program)
 {
-  print_error("Syntax is: %s input.{pcd,ply,obj,off} output.pcd <options>\n", program);
+  print_error("Syntax is: %s input.{pcd,ply,obj,off,stl} output.pcd <options>\n",
+              program);
   print_info(
     "  Labels every point with the visibility radius of its voxel-band cell (Chica et "
     "al.,\n"
@@ -70,8 +71,9 @@ printHelp(const char* program)
     "  feature_class (uint8: 0 none, 1 vertex, 2 edge, 3 face); an existing field of\n"
     "  one of these names is overwritten. label is the region id (0 = none).\n");
   print_info(
-    "  A mesh (.obj, .off, or .ply with faces) gives the band directly: its triangles\n"
-    "  are rasterised into the cells (-fill mesh, the default for meshes); the output\n"
+    "  A mesh (.obj, .off, .stl, or .ply with faces) gives the band directly: its\n"
+    "  triangles are rasterised into the cells (-fill mesh, the default for meshes); "
+    "the output\n"
     "  points are sampled on it uniformly by area, with a fixed seed (the same mesh\n"
     "  always gives the same cloud; -mesh_points, -mesh_spacing).\n");
   print_info("  where options are:\n");

@@ -213,7 +213,7 @@ loadCloud(const std::string& path,
   const std::string ext = lowerExtension(path);
   if (ext != ".pcd" && ext != ".ply") {
     error = "'" + path + "': unknown extension '" + ext +
-            "' (expected .pcd, .ply, .obj or .off)";
+            "' (expected .pcd, .ply, .obj, .off or .stl)";
     return false;
   }
   std::error_code ec;

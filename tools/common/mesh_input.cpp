@@ -12,6 +12,7 @@
 #include <pcl/conversions.h>
 #include <pcl/io/obj_io.h>
 #include <pcl/io/ply_io.h>
+#include <pcl/io/vtk_lib_io.h>
 #include <pcl/point_cloud.h>
 #include <pcl/point_types.h>
 
@@ -26,7 +27,7 @@ bool
 isMeshFile(const std::string& path)
 {
   const std::string ext = lowerExtension(path);
-  if (ext == ".obj" || ext == ".off")
+  if (ext == ".obj" || ext == ".off" || ext == ".stl")
     return true;
   if (ext != ".ply")
     return false;
@@ -92,6 +93,60 @@ toSurfaceMesh(const pcl::PolygonMesh& in, visfeat::SurfaceMesh& out, std::string
   return true;
 }
 
+std::string
+stlProblem(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
+  if (!in)
+    return "cannot be opened";
+  const auto size = static_cast<std::uint64_t>(in.tellg());
+  in.seekg(0);
+  // binary: an 80-byte header, a 32-bit little-endian triangle count, 50 bytes each
+  if (size >= kStlHeaderBytes + 4) {
+    unsigned char header[kStlHeaderBytes + 4];
+    in.read(reinterpret_cast<char*>(header), sizeof header);
+    const std::uint64_t count =
+      std::uint64_t(header[80]) | std::uint64_t(header[81]) << 8 |
+      std::uint64_t(header[82]) << 16 | std::uint64_t(header[83]) << 24;
+    const std::uint64_t expected = kStlHeaderBytes + 4 + kStlTriangleBytes * count;
+    if (size == expected)
+      return count == 0 ? "a binary STL without triangles" : "";
+    // text has no NUL byte; a binary STL's count and coordinates nearly always do
+    const std::string head(reinterpret_cast<const char*>(header), sizeof header);
+    if (head.find('\0') != std::string::npos)
+      return "a binary STL of " + std::to_string(size) + " bytes whose count says " +
+             std::to_string(count) + " triangles (" + std::to_string(expected) +
+             " bytes): truncated or not an STL";
+  }
+  // ASCII: solid ... facet normal ... outer loop, vertex x y z (3 times), endloop,
+  // endfacet ... endsolid
+  in.clear();
+  in.seekg(0);
+  std::string word;
+  if (!(in >> word) || word != "solid")
+    return "neither a binary STL (its size does not match its triangle count) nor an "
+           "ASCII one (it does not start with 'solid')";
+  std::uint64_t vertices = 0;
+  bool ended = false;
+  while (in >> word) {
+    if (word == "vertex") {
+      double x, y, z;
+      if (!(in >> x >> y >> z) || !std::isfinite(x) || !std::isfinite(y) ||
+          !std::isfinite(z))
+        return "an ASCII STL with a vertex that is not three finite numbers";
+      ++vertices;
+    } else if (word == "endsolid") {
+      ended = true;
+    }
+  }
+  if (!ended)
+    return "an ASCII STL without 'endsolid' (truncated?)";
+  if (vertices == 0 || vertices % 3 != 0)
+    return "an ASCII STL with " + std::to_string(vertices) +
+           " vertices (3 a triangle, at least one triangle)";
+  return "";
+}
+
 bool
 loadMesh(const std::string& path, visfeat::SurfaceMesh& mesh, std::string& error)
 {
@@ -107,11 +162,21 @@ loadMesh(const std::string& path, visfeat::SurfaceMesh& mesh, std::string& error
     return true;
   }
   pcl::PolygonMesh polygons;
+  if (ext == ".stl") {
+    // VTK's reader (through PCL) has no error path of its own: check the file first
+    const std::string problem = stlProblem(path);
+    if (!problem.empty()) {
+      error = "'" + path + "': not a valid STL mesh: " + problem;
+      return false;
+    }
+  }
   const int rc = quietly([&] {
+    if (ext == ".stl")
+      return pcl::io::loadPolygonFileSTL(path, polygons) > 0 ? 0 : -1;
     return ext == ".ply" ? pcl::io::loadPLYFile(path, polygons)
                          : pcl::io::loadOBJFile(path, polygons);
   });
-  const std::string format = ext == ".ply" ? "PLY" : "OBJ";
+  const std::string format = ext == ".ply" ? "PLY" : ext == ".stl" ? "STL" : "OBJ";
   if (rc < 0) {
     error = "'" + path + "': not a valid " + format +
             " mesh (header or data could not be parsed)";

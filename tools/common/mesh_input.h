@@ -28,9 +28,20 @@ struct MeshDensity
   double spacing = 0.0;
 };
 
-/** \brief True when `path` is a mesh to sample: .obj, .off, or a .ply whose header
- * declares at least one face. A .ply that cannot be read stays a "cloud", so the cloud
- * reader reports what is wrong with it. */
+/** \brief Binary STL layout: header bytes before the triangle count, bytes a
+ * triangle (normal, 3 vertices, attribute count). */
+constexpr std::uint64_t kStlHeaderBytes = 80;
+constexpr std::uint64_t kStlTriangleBytes = 50;
+
+/** \brief What is wrong with an STL file, empty when it looks valid: a binary STL
+ * whose size matches its triangle count, or an ASCII one from 'solid' to 'endsolid'
+ * with 3 finite vertices a facet. VTK's STL reader (pcl::io::loadPolygonFileSTL) has
+ * no error path and must only see files that pass. */
+std::string stlProblem(const std::string& path);
+
+/** \brief True when `path` is a mesh to sample: .obj, .off, .stl, or a .ply whose
+ * header declares at least one face. A .ply that cannot be read stays a "cloud", so the
+ * cloud reader reports what is wrong with it. */
 bool isMeshFile(const std::string& path);
 
 /** \brief A pcl::PolygonMesh as a visfeat::SurfaceMesh: vertex coordinates whatever
@@ -41,7 +52,8 @@ bool toSurfaceMesh(const pcl::PolygonMesh& in,
                    visfeat::SurfaceMesh& out,
                    std::string& error);
 
-/** \brief Read a mesh file (.off by visfeat::readOff, .ply and .obj by PCL). On
+/** \brief Read a mesh file (.off by visfeat::readOff, .ply and .obj by PCL, .stl by
+ * PCL's VTK reader after stlProblem()). On
  * failure `error` is one line naming the file. */
 bool loadMesh(const std::string& path, visfeat::SurfaceMesh& mesh, std::string& error);
 

@@ -180,7 +180,7 @@ TEST_F(CloudInput, LoadErrorsNameTheFileAndTheProblem)
   const std::string xyz = write("c.xyz", "1 2 3\n");
   EXPECT_EQ(errorOf(xyz),
             "'" + xyz +
-              "': unknown extension '.xyz' (expected .pcd, .ply, .obj or .off)");
+              "': unknown extension '.xyz' (expected .pcd, .ply, .obj, .off or .stl)");
   EXPECT_EQ(errorOf(path("none.pcd")), "'" + path("none.pcd") + "': no such file");
   fs::create_directory(path("dir.pcd"));
   EXPECT_EQ(errorOf(path("dir.pcd")), "'" + path("dir.pcd") + "': is a directory");

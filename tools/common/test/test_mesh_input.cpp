@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <cstring>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace vt = visfeat_tools;
@@ -145,6 +146,88 @@ TEST_F(MeshInput, LoadErrorsNameTheFile)
   EXPECT_FALSE(vt::loadMesh(ply, mesh, error));
   EXPECT_EQ(error,
             "'" + ply + "': not a valid PLY mesh (header or data could not be parsed)");
+}
+
+/** The tetrahedron of kTetrahedronOff as an ASCII STL (one facet per face, each
+ * vertex written three times). */
+std::string
+tetrahedronAsciiStl()
+{
+  const char* const v[4] = {"0 0 0", "1 0 0", "0 1 0", "0 0 1"};
+  const int faces[4][3] = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
+  std::string stl = "solid tetrahedron\n";
+  for (const auto& f : faces) {
+    stl += " facet normal 0 0 0\n  outer loop\n";
+    for (const int i : f)
+      stl += std::string("   vertex ") + v[i] + "\n";
+    stl += "  endloop\n endfacet\n";
+  }
+  return stl + "endsolid tetrahedron\n";
+}
+
+/** The same as a binary STL: 80-byte header (starting with "solid", as many exporters
+ * write it), the count, 50 bytes a triangle. */
+std::string
+tetrahedronBinaryStl()
+{
+  const float v[4][3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  const int faces[4][3] = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
+  std::string stl(80, ' ');
+  stl.replace(0, 5, "solid");
+  const std::uint32_t count = 4;
+  for (int b = 0; b < 4; ++b)
+    stl += static_cast<char>((count >> (8 * b)) & 0xff);
+  for (const auto& f : faces) {
+    float record[12] = {};
+    for (int c = 0; c < 3; ++c)
+      for (int a = 0; a < 3; ++a)
+        record[3 + 3 * c + a] = v[f[c]][a];
+    stl.append(reinterpret_cast<const char*>(record), sizeof record);
+    stl.append(2, '\0'); // attribute byte count
+  }
+  return stl;
+}
+
+TEST_F(MeshInput, LoadsAsciiAndBinaryStl)
+{
+  EXPECT_TRUE(vt::isMeshFile(path("absent.STL")));
+  for (const auto& [name, text] :
+       {std::pair<std::string, std::string>{"ascii.stl", tetrahedronAsciiStl()},
+        {"binary.stl", tetrahedronBinaryStl()}}) {
+    visfeat::SurfaceMesh mesh;
+    std::string error;
+    const std::string file = write(name, text);
+    EXPECT_EQ(vt::stlProblem(file), "") << name;
+    ASSERT_TRUE(vt::loadMesh(file, mesh, error)) << name << ": " << error;
+    EXPECT_EQ(mesh.vertices.size(), 4u) << name << ": shared corners are merged";
+    EXPECT_EQ(mesh.triangles.size(), 4u) << name;
+    EXPECT_NO_THROW(visfeat::validateMesh(mesh)) << name;
+  }
+}
+
+TEST_F(MeshInput, BrokenStlFilesAreRefusedBeforeTheReader)
+{
+  const std::string ascii = tetrahedronAsciiStl(), binary = tetrahedronBinaryStl();
+  const std::pair<std::string, std::string> cases[] = {
+    {ascii.substr(0, ascii.size() / 2), "without 'endsolid'"},
+    {"solid x\n facet normal 0 0 0\n outer loop\n vertex 0 0 nan\n endsolid x\n",
+     "not three finite numbers"},
+    {"solid x\n facet normal 0 0 0\n outer loop\n vertex 0 0 0\n endsolid x\n",
+     "with 1 vertices"},
+    {binary.substr(0, binary.size() - 7),
+     "a binary STL of 277 bytes whose count says 4 triangles (284 bytes)"},
+    {binary.substr(0, 84).replace(80, 4, std::string(4, '\0')), "without triangles"},
+    {"", "neither a binary STL"},
+  };
+  for (const auto& [text, expected] : cases) {
+    const std::string file = write("broken.stl", text);
+    visfeat::SurfaceMesh mesh;
+    std::string error;
+    EXPECT_FALSE(vt::loadMesh(file, mesh, error)) << expected;
+    EXPECT_EQ(error.rfind("'" + file + "': not a valid STL mesh: ", 0), 0u) << error;
+    EXPECT_NE(error.find(expected), std::string::npos)
+      << error << " (expected: " << expected << ")";
+  }
 }
 
 TEST_F(MeshInput, SamplesAMeshIntoACloud)
