@@ -8,6 +8,7 @@
 #include "common/output_files.h"
 #include "common/tool_main.h"
 #include "peers.h"
+#include "visfeat_eval_report.h"
 
 #include <core/common/json_document.h>
 
@@ -37,9 +38,6 @@
 #include <thread>
 #include <vector>
 
-#ifdef _OPENMP
-#endif
-
 using namespace pcl::console;
 namespace vt = visfeat_tools;
 namespace syn = visfeat::synthetic;
@@ -49,15 +47,17 @@ namespace {
 
 const char* const kProgram = "visfeat_eval";
 
-constexpr double kSpacingCells = 0.5;
-constexpr int kPclK = 30;
-constexpr double kVcmOffsetCells = 4.0;
-constexpr double kVcmConvolutionCells = 2.0;
-#ifdef VISFEAT_HAVE_CGAL
-constexpr bool kHaveCgal = true;
-#else
-constexpr bool kHaveCgal = false;
-#endif
+using visfeat_eval::kHaveCgal;
+using visfeat_eval::kPclK;
+using visfeat_eval::kSpacingCells;
+using visfeat_eval::kVcmConvolutionCells;
+using visfeat_eval::kVcmOffsetCells;
+using visfeat_eval::PeerRow;
+using visfeat_eval::printHeader;
+using visfeat_eval::printRow;
+using visfeat_eval::Row;
+using visfeat_eval::Settings;
+using visfeat_eval::writeJson;
 
 std::string
 joined(const std::vector<std::string>& items)
@@ -143,196 +143,6 @@ fail(const std::string& message)
   return 1;
 }
 
-struct Settings
-{
-  std::vector<std::string> models;
-  std::vector<double> noise{0.0, 0.22, 0.32, 0.45};
-  int resolution = 256;
-  bool set_resolution = false;
-  std::size_t points = 0; // 0: 0.5-cell spacing at the resolution
-  visfeat::LocalTriangleParameters fill;
-  long long seed = 1;
-  bool set_opacity = false, set_min_radius = false, set_max_radius = false;
-  bool noise_mode = false;
-  double opacity = 0.0;
-  int min_radius = 0, max_radius = 0;
-  int threads = 0;
-  bool pcl = true, cgal = kHaveCgal;
-  std::size_t cgal_max_points = 0;
-  std::size_t quantiles = 0;
-  std::string json;
-};
-
-/** \brief A peer's best threshold, or why there is none. */
-struct PeerRow
-{
-  bool run = false;
-  std::string note; // why not run, or the error
-  ev::ThresholdSweep sweep;
-  double seconds = 0.0;
-};
-
-struct Row
-{
-  std::string model;
-  double sigma = 0.0;
-  std::size_t points = 0;
-  double cell = 0.0;
-  std::string error;
-  ev::TopologyComparison topology;
-  ev::PointScores scores;
-  double seconds = 0.0;
-  PeerRow pcl, cgal;
-};
-
-// Table: one row per model and sigma, printed when the row is complete.
-void
-printHeader()
-{
-  std::printf("%-16s %5s %8s | %-9s %-9s %-6s | %5s %5s %5s %7s | %5s %7s %9s | %5s "
-              "%7s %9s\n",
-              "model", "sigma", "points", "V/E/F", "true", "arcs", "P", "R", "F1",
-              "time_s", "PCL", "time_s", "thr", "CGAL", "time_s", "thr");
-  std::fflush(stdout);
-}
-
-std::string
-countsText(const std::array<std::size_t, 3>& c)
-{
-  return std::to_string(c[0]) + "/" + std::to_string(c[1]) + "/" + std::to_string(c[2]);
-}
-
-std::string
-peerText(const PeerRow& p)
-{
-  char text[64];
-  if (!p.run)
-    std::snprintf(text, sizeof(text), "%5s %7s %9s", "-", "-", "-");
-  else
-    std::snprintf(text, sizeof(text), "%5.3f %7.2f %9.3g", p.sweep.scores.f1(),
-                  p.seconds, p.sweep.threshold);
-  return text;
-}
-
-void
-printRow(const Row& r)
-{
-  if (!r.error.empty()) {
-    std::printf("%-16s %5.2f %8zu | FAILED: %s\n", r.model.c_str(), r.sigma, r.points,
-                r.error.c_str());
-    std::fflush(stdout);
-    return;
-  }
-  // arcs: "ok" when every true curve's region links exactly its faces and end
-  // vertices, else how many curves do.
-  const std::string arcs = r.topology.arcsCorrect()
-                             ? "ok"
-                             : std::to_string(r.topology.curves_linked) + "/" +
-                                 std::to_string(r.topology.truth[1]);
-  std::printf("%-16s %5.2f %8zu | %-9s %-9s %-6s | %5.3f %5.3f %5.3f %7.2f | %s | %s\n",
-              r.model.c_str(), r.sigma, r.points, countsText(r.topology.found).c_str(),
-              countsText(r.topology.truth).c_str(), arcs.c_str(), r.scores.precision(),
-              r.scores.recall(), r.scores.f1(), r.seconds, peerText(r.pcl).c_str(),
-              peerText(r.cgal).c_str());
-  std::fflush(stdout);
-}
-
-using visfeat::json_document::Json;
-
-/** A number, or null when it is undefined (a score of nothing, NaN). */
-Json
-jsonNumber(double v)
-{
-  return std::isfinite(v) ? Json(v) : Json(nullptr);
-}
-
-Json
-scoresJson(const ev::PointScores& s)
-{
-  return {{"precision", jsonNumber(s.precision())},
-          {"recall", jsonNumber(s.recall())},
-          {"f1", jsonNumber(s.f1())},
-          {"labeled", s.labeled},
-          {"labeled_near", s.labeled_near},
-          {"near", s.near},
-          {"near_labeled", s.near_labeled}};
-}
-
-Json
-peerJson(const PeerRow& p)
-{
-  if (!p.run)
-    return {{"run", false}, {"note", p.note}};
-  Json peer = {{"run", true},
-               {"threshold", jsonNumber(p.sweep.threshold)},
-               {"thresholds_tried", p.sweep.candidates},
-               {"seconds", jsonNumber(p.seconds)}};
-  peer.update(scoresJson(p.sweep.scores));
-  return peer;
-}
-
-Json
-visfeatJson(const Row& r)
-{
-  const ev::TopologyComparison& t = r.topology;
-  Json v = {
-    {"seconds", jsonNumber(r.seconds)},
-    {"found", {{"vertices", t.found[0]}, {"edges", t.found[1]}, {"faces", t.found[2]}}},
-    {"truth", {{"vertices", t.truth[0]}, {"edges", t.truth[1]}, {"faces", t.truth[2]}}},
-    {"counts_exact", t.countsExact()},
-    {"arcs_correct", t.arcsCorrect()},
-    {"curves_matched", t.curves_matched},
-    {"vertices_matched", t.vertices_matched},
-    {"faces_matched", t.faces_matched},
-    {"curves_linked", t.curves_linked}};
-  v.update(scoresJson(r.scores));
-  v["problems"] = t.problems;
-  return v;
-}
-
-bool
-writeJson(const Settings& s, const std::vector<Row>& rows, std::string& error)
-{
-  if (!vt::checkWritable(s.json, error))
-    return false;
-  Json document = {{"format", "visfeat-eval"},
-                   {"version", 1},
-                   {"resolution", s.resolution},
-                   {"seed", s.seed},
-                   {"spacing_cells", kSpacingCells},
-                   {"pcl_k", kPclK},
-                   {"vcm_offset_cells", kVcmOffsetCells},
-                   {"vcm_convolution_cells", kVcmConvolutionCells},
-                   {"recall_cells", 1},
-                   {"precision_cells", 2},
-                   {"rows", Json::array()}};
-  for (const Row& r : rows) {
-    Json row = {{"model", r.model},
-                {"sigma_cells", jsonNumber(r.sigma)},
-                {"points", r.points},
-                {"cell", jsonNumber(r.cell)}};
-    if (!r.error.empty()) {
-      row["error"] = r.error;
-    } else {
-      row["visfeat"] = visfeatJson(r);
-      row["pcl_surface_variation"] = peerJson(r.pcl);
-      row["cgal_vcm"] = peerJson(r.cgal);
-    }
-    document["rows"].push_back(row);
-  }
-  {
-    std::ofstream out(vt::temporaryPath(s.json));
-    visfeat::json_document::write(out, document);
-    if (!out) {
-      vt::discardOutput(s.json);
-      error = "cannot write '" + s.json + "'";
-      return false;
-    }
-  }
-  return vt::commitOutput(s.json, error);
-}
-
-/** Progress on stderr, so stdout stays the table. */
 void progress(const char* format, ...) __attribute__((format(printf, 1, 2)));
 
 void
