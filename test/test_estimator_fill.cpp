@@ -166,6 +166,15 @@ TEST(EstimatorFill, ABandTooCoarseForItsFeaturesWarns)
   ASSERT_FALSE(est.getWarnings().empty());
   EXPECT_NE(est.getWarnings().front().find("raise the resolution"), std::string::npos)
     << est.getWarnings().front();
+  // noise roughens the band too: the advice names noise mode until it is on
+  EXPECT_NE(est.getWarnings().front().find("setNoiseMode(true)"), std::string::npos)
+    << est.getWarnings().front();
+  est.setNoiseMode(true);
+  est.compute(out);
+  ASSERT_EQ(est.getErrorMessage(), "");
+  ASSERT_FALSE(est.getWarnings().empty());
+  EXPECT_EQ(est.getWarnings().front().find("setNoiseMode"), std::string::npos)
+    << est.getWarnings().front();
 }
 
 TEST(EstimatorFill, AMeshIsRasterisedDirectly)

@@ -51,6 +51,7 @@ inToolTerms(std::string message)
      "give a mesh (.obj, .off, .stl, or .ply with faces) as input"},
     {"setResolution()", "-resolution"},
     {"setSurfaceFill()", "-fill"},
+    {"setNoiseMode(true)", "-noise_mode"},
   };
   for (const auto& [library, tool] : kTerms)
     for (std::size_t at = message.find(library); at != std::string::npos;

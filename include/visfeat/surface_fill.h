@@ -62,6 +62,11 @@ constexpr double kMaxFillCellsPerSpacing = 4.0;
  * spared the k-d tree. */
 constexpr double kFillCheckPointsPerCell2 = 4.0;
 
+/** \brief Appended to the warnings of too few face cores when noise mode is off: noise
+ * roughens the band as much as close features do (the tool says -noise_mode). */
+constexpr const char* kNoisyScanAdvice =
+  "; if the scan is noisy, use noise mode (setNoiseMode(true))";
+
 /** \brief compute() warns when fewer of the band's cells than this reach min_radius
  * (the face cores): measured 0.3-0.6 on the generated models at 256 cells, 0.11 on a
  * 20,000-point cube at the 48 cells its density alone allows (1 face of 6 found). */

@@ -526,6 +526,8 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::checkResults(const Results& re
     if (run.fill == SurfaceFill::kPoints && run.resolution.spacing > 0.0)
       w << " and fill the band between the points (fill 'triangles')";
     w << ", or lower min_radius";
+    if (!noise_mode_)
+      w << kNoisyScanAdvice;
     run.warnings.push_back(w.str());
   } else if (core_share < kMinCoreShare) {
     w << "only " << std::round(1000.0 * core_share) / 10.0
@@ -533,6 +535,8 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::checkResults(const Results& re
       << " min_radius " << min_radius << " rings: most of the surface lies within "
       << min_radius << " cells of a feature at resolution " << resolution
       << ", so small faces and close edges merge or vanish; raise the resolution";
+    if (!noise_mode_)
+      w << kNoisyScanAdvice;
     run.warnings.push_back(w.str());
   }
   if (repair_share > kMaxRepairShare) {
