@@ -96,6 +96,19 @@ robustPlane(const std::vector<Eigen::Vector3d>& set, double noise)
   for (std::size_t j = 1; j < n; ++j)
     mean_distance += (set[j] - p).norm();
   mean_distance /= static_cast<double>(n - 1);
+  // Fast path: a neighbourhood on one plane within the noise (most of a face) has every
+  // point an inlier of its least squares plane, which the search below would return.
+  {
+    TangentPlane plane = leastSquaresPlane(set);
+    const double band = std::max(kNoiseBand * noise, kMinInlierShare * mean_distance);
+    bool flat = true;
+    for (const Eigen::Vector3d& q : set)
+      flat = flat && std::abs(plane.normal.dot(q - plane.point)) <= band;
+    if (flat) {
+      plane.point = p - plane.normal * plane.normal.dot(p - plane.point);
+      return plane;
+    }
+  }
   const auto candidates = candidatePlanes(set);
   if (candidates.empty()) // all nearly collinear
     return leastSquaresPlane(set);
