@@ -1,3 +1,4 @@
+#include "../common/angles.h"
 #include <visfeat/core/band/crease_fill.h>
 #include <visfeat/core/common/error.h>
 #include <visfeat/core/common/threads.h>
@@ -14,8 +15,6 @@
 namespace visfeat {
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 /** Sample step along a crease triangle (cells): several samples a cell, so every cell
  * the rebuilt faces cross receives one. */
@@ -138,7 +137,7 @@ creaseFillCells(const GridSpec& grid,
 {
   if (planes.size() != points.size())
     throw Error("creaseFillCells: one tangent plane per point is needed");
-  const double agree = std::cos(std::min(crease_degrees, 180.0) * kPi / 180.0);
+  const double agree = detail::cosineOfDegrees(std::min(crease_degrees, 180.0));
   auto isCrease = [&](const TriangleIndices& t) {
     for (int a = 0; a < 3; ++a)
       for (int b = a + 1; b < 3; ++b) {

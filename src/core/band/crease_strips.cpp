@@ -1,3 +1,4 @@
+#include "../common/angles.h"
 #include <visfeat/core/band/crease_strips.h>
 #include <visfeat/core/common/error.h>
 #include <visfeat/core/common/threads.h>
@@ -14,8 +15,6 @@
 namespace visfeat {
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 /** Below this cosine between the line to the other point and a point's plane, the other
  * point lies too close to that plane to tell the sides of the crease apart. */
@@ -136,7 +135,7 @@ creaseStripCells(const GridSpec& grid,
     throw Error("creaseStripCells: the neighbours or planes do not match the points");
   if (crease_degrees >= 180.0)
     return {};
-  const double agree = std::cos(crease_degrees * kPi / 180.0);
+  const double agree = detail::cosineOfDegrees(crease_degrees);
   // per chunk of points: the feet (appended after the points) and the strip triangles
   const std::size_t chunks = (points.size() + kPerChunk - 1) / kPerChunk;
   std::vector<std::vector<Eigen::Vector3d>> feet(chunks);
@@ -144,7 +143,7 @@ creaseStripCells(const GridSpec& grid,
   // a corner is made only of points whose plane another point shares (a point beside a
   // crease can take a plane between the faces' that no neighbour confirms)
   std::vector<std::uint8_t> confirmed(points.size(), 0);
-  const double same = std::cos(kConfirmDegrees * kPi / 180.0);
+  const double same = detail::cosineOfDegrees(kConfirmDegrees);
   parallelFor(
     points.size(), threads, kPerChunk, [&](std::size_t begin, std::size_t end) {
       for (std::size_t i = begin; i < end; ++i) {

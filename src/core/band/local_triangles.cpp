@@ -1,3 +1,4 @@
+#include "../common/angles.h"
 #include <visfeat/core/band/local_triangles.h>
 #include <visfeat/core/common/error.h>
 #include <visfeat/core/common/threads.h>
@@ -14,8 +15,6 @@
 namespace visfeat {
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 /** Points per chunk of the parallel fan building. */
 constexpr std::size_t kPointsPerChunk = 1024;
@@ -80,7 +79,7 @@ appendUmbrella(const std::vector<Eigen::Vector3d>& points,
     const Eigen::Vector3d d = points[near[j].second] - p;
     flat[j] = Eigen::Vector2d(d.dot(u), d.dot(v));
   }
-  const double max_angle = std::cos(parameters.max_gap_degrees * kPi / 180.0);
+  const double max_angle = detail::cosineOfDegrees(parameters.max_gap_degrees);
   for (std::size_t a = 0; a < m; ++a)
     for (std::size_t b = a + 1; b < m; ++b) {
       const Eigen::Vector2d& qa = flat[a];

@@ -1,3 +1,4 @@
+#include "../common/angles.h"
 #include <visfeat/core/band/organized_triangles.h>
 #include <visfeat/core/common/error.h>
 
@@ -12,8 +13,6 @@
 namespace visfeat {
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 /** The lower median of v (reordered); NaN when v is empty. */
 double
@@ -39,7 +38,7 @@ public:
       , origin_(origin)
       , range_(points.size(), 0.0)
       , max_ratio_(parameters.max_edge_ratio)
-      , min_cos_(std::cos(parameters.max_view_angle_degrees * kPi / 180.0))
+      , min_cos_(detail::cosineOfDegrees(parameters.max_view_angle_degrees))
   {
     // range 0: no return (non-finite, or at the sensor itself)
     for (std::size_t i = 0; i < points.size(); ++i)
