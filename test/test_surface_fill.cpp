@@ -1,6 +1,8 @@
 // The band from the surface: exact triangle rasterisation, the local Delaunay fill
 // between sparse points, the band's fill cells, and the estimator's choice of fill.
 
+#include "band_fixtures.h"
+
 #include <visfeat/core/band/crease_fill.h>
 #include <visfeat/core/band/crease_strips.h>
 #include <visfeat/core/band/local_triangles.h>
@@ -342,10 +344,7 @@ TEST(CreaseFill, RebuildsACreaseSharp)
   std::vector<Eigen::Vector3d> points;
   for (const Eigen::Vector3d& p : raw)
     points.push_back(p + Eigen::Vector3d(0.0, 20.5, 20.5));
-  visfeat::GridSpec grid;
-  grid.origin = Eigen::Vector3d::Zero();
-  grid.cell_size = 1.0;
-  grid.dims = Eigen::Vector3i(64, 64, 64);
+  const visfeat::GridSpec grid = visfeat_test::cubeGrid(64);
   visfeat::LocalTriangleParameters parameters;
   const int k = parameters.neighbours + 1;
   const auto neighbours = nearest(points, k);
@@ -386,6 +385,30 @@ TEST(CreaseFill, RebuildsACreaseSharp)
     << "thread count";
 }
 
+/** The sparse fill with its creases rebuilt, as localTriangleCells() puts it together:
+ * the local triangles (chords lifted) and the crease strips, the strips checked to be
+ * the same on one thread as on two. */
+std::vector<CellCoord>
+sharpCells(const visfeat::GridSpec& grid,
+           const std::vector<Eigen::Vector3d>& points,
+           const std::vector<visfeat::TangentPlane>& planes,
+           const std::vector<std::uint32_t>& neighbours,
+           int k,
+           const visfeat::LocalTriangleParameters& parameters)
+{
+  const auto triangles =
+    visfeat::umbrellaTriangles(points, neighbours, k, parameters, 1);
+  std::vector<CellCoord> cells = visfeat::creaseFillCells(
+    grid, points, planes, triangles, parameters.crease_degrees, 2);
+  const std::vector<CellCoord> strips = visfeat::creaseStripCells(
+    grid, points, planes, neighbours, k, parameters.crease_degrees, 2);
+  EXPECT_EQ(strips, visfeat::creaseStripCells(grid, points, planes, neighbours, k,
+                                              parameters.crease_degrees, 1))
+    << "thread count";
+  cells.insert(cells.end(), strips.begin(), strips.end());
+  return cells;
+}
+
 /** Two half-planes meeting at the line y = z = 32.3 (along x) at `degrees` (the
  * dihedral angle), sampled every 3 cells with jitter and no point closer than 1.5 cells
  * to the crease: the chords there cut it by about a cell. */
@@ -413,24 +436,13 @@ TEST(CreaseFill, RebuildsAcuteAndObtuseCreasesToTheApex)
   for (const double degrees : {55.0, 70.5, 90.0, 120.0, 138.0}) {
     std::mt19937 rng(static_cast<unsigned>(degrees * 10));
     const std::vector<Eigen::Vector3d> points = creaseAtAngle(degrees, rng);
-    visfeat::GridSpec grid;
-    grid.origin = Eigen::Vector3d::Zero();
-    grid.cell_size = 1.0;
-    grid.dims = Eigen::Vector3i(64, 64, 64);
+    const visfeat::GridSpec grid = visfeat_test::cubeGrid(64);
     visfeat::LocalTriangleParameters parameters;
     const int k = parameters.neighbours + 1;
     const auto neighbours = nearest(points, k);
-    const auto triangles =
-      visfeat::umbrellaTriangles(points, neighbours, k, parameters, 1);
     const auto planes = visfeat::tangentPlanes(points, neighbours, k, 1);
-    std::vector<CellCoord> cells = visfeat::creaseFillCells(
-      grid, points, planes, triangles, parameters.crease_degrees, 2);
-    const std::vector<CellCoord> strips = visfeat::creaseStripCells(
-      grid, points, planes, neighbours, k, parameters.crease_degrees, 2);
-    EXPECT_EQ(strips, visfeat::creaseStripCells(grid, points, planes, neighbours, k,
-                                                parameters.crease_degrees, 1))
-      << "thread count";
-    cells.insert(cells.end(), strips.begin(), strips.end());
+    const std::vector<CellCoord> cells =
+      sharpCells(grid, points, planes, neighbours, k, parameters);
     std::set<Key> found;
     for (const CellCoord& c : cells)
       found.insert(key(c));
@@ -486,10 +498,7 @@ TEST(CreaseStrips, RebuildABoxCornerToItsApex)
   for (const unsigned seed : {3u, 4u, 5u}) {
     std::mt19937 rng(seed);
     const std::vector<Eigen::Vector3d> points = boxCorner(rng);
-    visfeat::GridSpec grid;
-    grid.origin = Eigen::Vector3d::Zero();
-    grid.cell_size = 1.0;
-    grid.dims = Eigen::Vector3i(64, 64, 64);
+    const visfeat::GridSpec grid = visfeat_test::cubeGrid(64);
     visfeat::LocalTriangleParameters parameters;
     const int k = parameters.neighbours + 1;
     const auto neighbours = nearest(points, k);
@@ -501,15 +510,8 @@ TEST(CreaseStrips, RebuildABoxCornerToItsApex)
         << "seed " << seed << " " << i;
       EXPECT_NEAR(planes[i].point[axis], 32.3, 1e-9) << "seed " << seed << " " << i;
     }
-    const auto triangles =
-      visfeat::umbrellaTriangles(points, neighbours, k, parameters, 1);
-    std::vector<CellCoord> cells = visfeat::creaseFillCells(
-      grid, points, planes, triangles, parameters.crease_degrees, 2);
-    const std::vector<CellCoord> strips = visfeat::creaseStripCells(
-      grid, points, planes, neighbours, k, parameters.crease_degrees, 2);
-    EXPECT_EQ(strips, visfeat::creaseStripCells(grid, points, planes, neighbours, k,
-                                                parameters.crease_degrees, 1));
-    cells.insert(cells.end(), strips.begin(), strips.end());
+    const std::vector<CellCoord> cells =
+      sharpCells(grid, points, planes, neighbours, k, parameters);
     std::set<Key> found;
     for (const CellCoord& c : cells)
       found.insert(key(c));
