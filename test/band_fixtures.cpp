@@ -58,8 +58,15 @@ sampleCadCloud(const visfeat::synthetic::CadModel& model,
   options.count = synthetic::samplesForSpacing(model, resolution, 0.5);
   options.seed = seed;
   options.noise_sigma = noise_cells * synthetic::cellSize(model, resolution);
+  return sampleCadCloud(model, options);
+}
+
+SampledCadModel
+sampleCadCloud(const visfeat::synthetic::CadModel& model,
+               const visfeat::synthetic::SamplingOptions& options)
+{
   SampledCadModel sampled;
-  sampled.samples = synthetic::sampleCadModel(model, options);
+  sampled.samples = visfeat::synthetic::sampleCadModel(model, options);
   sampled.cloud = std::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
   for (const Eigen::Vector3f& p : sampled.samples.points)
     sampled.cloud->push_back(pcl::PointXYZ(p.x(), p.y(), p.z()));

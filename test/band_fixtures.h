@@ -89,6 +89,11 @@ struct SampledCadModel
   pcl::PointCloud<pcl::PointXYZ>::Ptr cloud;
 };
 
+/** \brief `model` (already rotated) sampled as `options` say, and its points as a
+ * cloud. */
+SampledCadModel sampleCadCloud(const visfeat::synthetic::CadModel& model,
+                               const visfeat::synthetic::SamplingOptions& options);
+
 /** \brief `model` (already rotated) sampled 0.5 cells apart on a grid of `resolution`
  * cells, with seed `seed` and Gaussian noise of `noise_cells` nominal cells. */
 SampledCadModel sampleCadCloud(const visfeat::synthetic::CadModel& model,

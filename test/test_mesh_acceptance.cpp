@@ -2,6 +2,8 @@
 // their dense samples (which the models acceptance test checks against the truth), at
 // 256 and at 1024 cells. About 3 minutes on 2 cores: label acceptance.
 
+#include "band_fixtures.h"
+
 #include <support/cad_models.h>
 #include <visfeat/point_types.h>
 #include <visfeat/visibility_feature_estimation.h>
@@ -42,10 +44,8 @@ TEST_P(MeshTopology, CountsMatchTheTruth)
   syn::SamplingOptions options;
   options.count = 20000;
   options.seed = seed;
-  const syn::CadSamples samples = syn::sampleCadModel(model, options);
-  auto cloud = std::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
-  for (const Eigen::Vector3f& p : samples.points)
-    cloud->push_back(pcl::PointXYZ(p.x(), p.y(), p.z()));
+  const pcl::PointCloud<pcl::PointXYZ>::Ptr cloud =
+    visfeat_test::sampleCadCloud(model, options).cloud;
 
   Estimator est;
   est.setInputCloud(cloud);

@@ -5,6 +5,8 @@
 // than the spacing), and exact counts and arcs on a guarded share of the cases. About
 // 2 minutes on 2 cores: label acceptance.
 
+#include "band_fixtures.h"
+
 #include <support/cad_models.h>
 #include <support/evaluation.h>
 #include <visfeat/point_types.h>
@@ -53,12 +55,11 @@ runCase(const std::string& name, std::size_t count, std::uint64_t seed)
   syn::SamplingOptions options;
   options.count = count;
   options.seed = seed;
-  const syn::CadSamples samples = syn::sampleCadModel(model, options);
-  auto cloud = std::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
-  for (const Eigen::Vector3f& p : samples.points)
-    cloud->push_back(pcl::PointXYZ(p.x(), p.y(), p.z()));
+  const visfeat_test::SampledCadModel sampled =
+    visfeat_test::sampleCadCloud(model, options);
+  const syn::CadSamples& samples = sampled.samples;
   Estimator est;
-  est.setInputCloud(cloud);
+  est.setInputCloud(sampled.cloud);
   est.setResolution(0); // automatic, as the tool's default
   pcl::PointCloud<visfeat::PointVisibility> out;
   est.compute(out);
