@@ -85,10 +85,12 @@ candidatePlanes(const std::vector<Eigen::Vector3d>& set)
   return planes;
 }
 
-/** The robust plane of set[0] (the point) and the rest (its neighbours); `noise` is
- * the cloud's noise scale (world units). */
+/** The robust plane of set[0] (the point) and the rest (its neighbours); `fitted` is
+ * the set's least squares plane, `noise` the cloud's noise scale (world units). */
 TangentPlane
-robustPlane(const std::vector<Eigen::Vector3d>& set, double noise)
+robustPlane(const std::vector<Eigen::Vector3d>& set,
+            const TangentPlane& fitted,
+            double noise)
 {
   const Eigen::Vector3d& p = set[0];
   const std::size_t n = set.size();
@@ -99,7 +101,7 @@ robustPlane(const std::vector<Eigen::Vector3d>& set, double noise)
   // Fast path: a neighbourhood on one plane within the noise (most of a face) has every
   // point an inlier of its least squares plane, which the search below would return.
   {
-    TangentPlane plane = leastSquaresPlane(set);
+    TangentPlane plane = fitted;
     const double band = std::max(kNoiseBand * noise, kMinInlierShare * mean_distance);
     bool flat = true;
     for (const Eigen::Vector3d& q : set)
@@ -111,7 +113,7 @@ robustPlane(const std::vector<Eigen::Vector3d>& set, double noise)
   }
   const auto candidates = candidatePlanes(set);
   if (candidates.empty()) // all nearly collinear
-    return leastSquaresPlane(set);
+    return fitted;
 
   // the scale: the least, over the planes, of the worse of p's distance and the
   // kPlaneSupport-th smallest distance of a point besides the three that define it
@@ -132,7 +134,7 @@ robustPlane(const std::vector<Eigen::Vector3d>& set, double noise)
     scale = std::min(scale, std::max(std::abs(plane.normal.dot(p - origin)), *at));
   }
   if (!std::isfinite(scale))
-    return leastSquaresPlane(set);
+    return fitted;
   const double band = std::max(
     {kInlierBand * scale, kNoiseBand * noise, kMinInlierShare * mean_distance});
   // the plane through p (within the band) with the most points within the band
@@ -203,7 +205,9 @@ tangentPlanes(const std::vector<Eigen::Vector3d>& points,
   // where it is the shape, are a minority. Zero on noise-free clouds. Without it the
   // band of a noisy point is set by the luckiest of its candidate planes, and most
   // points end up on planes of 4-5 points, tens of degrees off.
+  // (The least squares planes are kept for the robust fit below.)
   std::vector<double> rms(points.size(), std::numeric_limits<double>::quiet_NaN());
+  std::vector<TangentPlane> fitted(points.size());
   parallelFor(points.size(), threads, kPerChunk,
               [&](std::size_t begin, std::size_t end) {
                 std::vector<Eigen::Vector3d> set;
@@ -211,7 +215,7 @@ tangentPlanes(const std::vector<Eigen::Vector3d>& points,
                   setOf(i, set);
                   if (set.size() < 4)
                     continue;
-                  const TangentPlane plane = leastSquaresPlane(set);
+                  const TangentPlane& plane = fitted[i] = leastSquaresPlane(set);
                   double sum = 0.0;
                   for (const Eigen::Vector3d& q : set)
                     sum += std::pow(plane.normal.dot(q - plane.point), 2);
@@ -236,7 +240,8 @@ tangentPlanes(const std::vector<Eigen::Vector3d>& points,
                   planes[i].point = points[i];
                   setOf(i, set);
                   if (set.size() >= 3)
-                    planes[i] = robustPlane(set, noise);
+                    planes[i] = robustPlane(
+                      set, set.size() >= 4 ? fitted[i] : leastSquaresPlane(set), noise);
                 }
               });
   return planes;
