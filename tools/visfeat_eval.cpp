@@ -322,7 +322,7 @@ run(int argc, char** argv)
   s.set_min_radius = args.has("-min_radius");
   s.set_max_radius = args.has("-max_radius");
 
-  const std::vector<std::string> known = syn::cadModelNames();
+  const std::vector<std::string> known = syn::allCadModelNames();
   if (args.has("-models")) {
     for (const std::string& name : vt::splitList(args.value("-models"))) {
       if (std::find(known.begin(), known.end(), name) == known.end())
@@ -331,7 +331,7 @@ run(int argc, char** argv)
       s.models.push_back(name);
     }
   } else
-    s.models = known;
+    s.models = syn::cadModelNames();
   if (args.has("-noise")) {
     s.noise.clear();
     for (const std::string& item : vt::splitList(args.value("-noise"))) {

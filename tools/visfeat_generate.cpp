@@ -51,7 +51,7 @@ std::string
 modelList()
 {
   std::string list;
-  for (const auto& name : syn::cadModelNames())
+  for (const auto& name : syn::allCadModelNames())
     list += (list.empty() ? "" : ", ") + name;
   return list;
 }
@@ -273,7 +273,7 @@ readOptions(const vt::Arguments& args, Options& opt, std::string& error)
     return false;
   }
   bool known = false;
-  for (const auto& n : syn::cadModelNames())
+  for (const auto& n : syn::allCadModelNames())
     known = known || n == opt.name;
   if (!known) {
     error = "unknown model '" + opt.name + "' (known: " + modelList() + ")";

@@ -56,6 +56,11 @@ constexpr int kTopologyResolution = 256;
  * rounds creases by about a spacing, which must stay well below 2 min_radius cells. */
 constexpr double kMaxFillCellsPerSpacing = 4.0;
 
+/** \brief The automatic resolution is raised for a fill only by at least this factor:
+ * a dense cloud whose points support 238 cells was filled to reach 256, which cost
+ * 18.7 s of fill for 7% more cells (a generated cube, 500,000 points, 2 cores). */
+constexpr double kMinFillRaise = 1.25;
+
 /** \brief With a given resolution R, the spacing (which decides the automatic fill) is
  * measured only for clouds of fewer than this many points per R^2: denser ones have a
  * point per cell on any surface of area below this many times extent^2, and are

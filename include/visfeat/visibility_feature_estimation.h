@@ -34,11 +34,12 @@ struct PhaseTimes
   double segmentation_ms = 0.0; // components, regions, vertex/edge/face classes
   double output_ms = 0.0;       // per-point fields
   double graph_ms = 0.0;        // topology graph
+  double search_ms = 0.0;       // coarser runs of the resolution search, discarded
 
   double total() const
   {
     return shape_ms + grid_ms + smoothing_ms + band_ms + free_space_ms + visibility_ms +
-           segmentation_ms + output_ms + graph_ms;
+           segmentation_ms + output_ms + graph_ms + search_ms;
   }
 };
 
@@ -408,7 +409,9 @@ private:
     GridSpec grid;
     ResolutionEstimate resolution;
     SurfaceFill fill = SurfaceFill::kPoints;
-    bool raised_for_fill = false; // the automatic resolution counts on a fill
+    bool raised_for_fill = false;  // the automatic resolution counts on a fill
+    int search_cap = 0;            // the search for narrow faces goes no finer (0: off)
+    std::string search_cap_reason; // why it stops there
     std::string fill_reason;
     std::vector<std::string> notes;
     std::vector<std::string> warnings;
@@ -428,6 +431,11 @@ private:
 
   Run prepare() const;
   int chooseResolution(const CloudShape& shape, Run& run) const;
+  void prepareGrid(Run& run, int resolution) const;
+  Results searchResolution(const Run& base,
+                           Run& run,
+                           Results results,
+                           PointCloudOut& output) const;
   void chooseFill(Run& run) const;
   std::vector<CellCoord> fillCells(const Run& run, const PointCloudIn& surface) const;
   void checkResults(const Results& results, Run& run) const;

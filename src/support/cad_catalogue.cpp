@@ -123,7 +123,7 @@ std::string
 knownModels()
 {
   std::string known;
-  for (const auto& n : cadModelNames())
+  for (const auto& n : allCadModelNames())
     known += (known.empty() ? "" : ", ") + n;
   return known;
 }
@@ -135,6 +135,21 @@ cadModelNames()
 {
   return {"cube",    "tetrahedron",   "icosahedron", "triangular_prism",
           "u_prism", "box_with_hole", "cylinder"};
+}
+
+std::vector<std::string>
+smallFeatureModelNames()
+{
+  return {"stepped_block"};
+}
+
+std::vector<std::string>
+allCadModelNames()
+{
+  std::vector<std::string> names = cadModelNames();
+  for (const std::string& name : smallFeatureModelNames())
+    names.push_back(name);
+  return names;
 }
 
 CadModel
@@ -151,6 +166,17 @@ cadModelByName(const std::string& name)
     return boxWithHole();
   if (name == "cylinder")
     return cylinder();
+  if (name == "stepped_block")
+    return prismModel(name,
+                      {{0, 0},
+                       {1.8, 0},
+                       {1.8, 0.15},
+                       {1.2, 0.15},
+                       {1.2, 0.3},
+                       {0.6, 0.3},
+                       {0.6, 0.45},
+                       {0, 0.45}},
+                      1.2);
   throw Error("unknown CAD model '" + name + "' (known: " + knownModels() + ")");
 }
 

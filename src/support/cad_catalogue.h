@@ -15,7 +15,17 @@ namespace synthetic {
  * "triangular_prism", "u_prism", "box_with_hole", "cylinder". */
 std::vector<std::string> cadModelNames();
 
-/** \brief The model of a name of cadModelNames(), centred at the origin, axis-aligned.
+/** \brief Models with features closer than 2 min_radius cells at 256 (the small
+ * features of real machined parts), also accepted by cadModelByName():
+ * "stepped_block" 16/24/10 (a staircase of three treads 0.6 deep, risers 0.15 high,
+ * extruded by 1.2: at 256 cells along its 1.8 length a riser is 21 cells high). */
+std::vector<std::string> smallFeatureModelNames();
+
+/** \brief cadModelNames() then smallFeatureModelNames(). */
+std::vector<std::string> allCadModelNames();
+
+/** \brief The model of a name of allCadModelNames(), centred at the origin,
+ * axis-aligned.
  *
  * Truth counts (vertices / curves / faces): cube 8/12/6, tetrahedron 4/6/4,
  * icosahedron 12/30/20 (the Platonic solids of platonicSolid(), circumradius 1);

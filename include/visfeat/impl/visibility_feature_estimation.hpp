@@ -141,150 +141,9 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::prepare() const
   run.times.shape_ms = detail::millisecondsSince(start);
 
   start = std::chrono::steady_clock::now();
-  if (mesh_ && surface_fill_ != SurfaceFill::kPoints) {
-    // the grid covers the mesh too: its triangles reach beyond the points
-    validateMesh(*mesh_);
-    Eigen::Vector3d lo =
-      Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
-    Eigen::Vector3d hi = -lo;
-    for (const PointInT& p : surface_->points)
-      if (pcl::isXYZFinite(p)) {
-        lo = lo.cwiseMin(Eigen::Vector3d(p.x, p.y, p.z));
-        hi = hi.cwiseMax(Eigen::Vector3d(p.x, p.y, p.z));
-      }
-    for (const Eigen::Vector3d& v : mesh_->vertices) {
-      lo = lo.cwiseMin(v);
-      hi = hi.cwiseMax(v);
-    }
-    pcl::PointCloud<pcl::PointXYZ> corners;
-    corners.push_back(pcl::PointXYZ(static_cast<float>(lo.x()),
-                                    static_cast<float>(lo.y()),
-                                    static_cast<float>(lo.z())));
-    corners.push_back(pcl::PointXYZ(static_cast<float>(hi.x()),
-                                    static_cast<float>(hi.y()),
-                                    static_cast<float>(hi.z())));
-    run.grid = gridForCloud(corners, resolution);
-  } else {
-    run.grid = gridForCloud(*surface_, resolution);
-  }
-  chooseFill(run);
-  checkMemoryBudget(run);
+  prepareGrid(run, resolution);
   run.times.grid_ms = detail::millisecondsSince(start);
   return run;
-}
-
-template <typename PointInT, typename PointOutT>
-int
-VisibilityFeatureEstimation<PointInT, PointOutT>::chooseResolution(
-  const CloudShape& shape, Run& run) const
-{
-  if (resolution_ != kAutomaticResolution) {
-    run.resolution.resolution = resolution_;
-    run.resolution.extent = shape.extent;
-    run.resolution.reason = "set by setResolution()";
-    // the fill needs the spacing; it is cheap to measure on clouds that may need it
-    if (surface_fill_ == SurfaceFill::kAuto && !mesh_ && hasExtent(shape) &&
-        static_cast<double>(surface_->size()) <
-          kFillCheckPointsPerCell2 * double(resolution_) * double(resolution_)) {
-      const ResolutionEstimate density = estimateResolution(*surface_, shape.extent);
-      run.resolution.spacing = density.spacing;
-      run.resolution.k = density.k;
-      run.resolution.queries = density.queries;
-    }
-    return resolution_;
-  }
-  if (!hasExtent(shape))
-    return GridSpec::kMinResolution; // the grid refuses the cloud, saying why
-  try {
-    run.resolution = estimateResolution(*surface_, shape.extent);
-  } catch (const Error& e) {
-    throw Error(std::string(e.what()) + "; set the resolution (setResolution())");
-  }
-  const bool may_fill = surface_fill_ == SurfaceFill::kAuto ||
-                        surface_fill_ == SurfaceFill::kLocalTriangles ||
-                        surface_fill_ == SurfaceFill::kOrganized ||
-                        (surface_fill_ == SurfaceFill::kMesh && mesh_);
-  const int from_density = run.resolution.resolution;
-  if (mesh_ && may_fill && from_density > kTopologyResolution) {
-    // A mesh's triangles give the band at any resolution: the density of the points
-    // sampled on it says nothing about the features (a public icosahedron mesh sampled
-    // to 1,000,000 points gave 322 cells and 12/28/20; 256 gives 12/30/20).
-    std::ostringstream reason;
-    reason
-      << run.resolution.reason << "; the points alone support " << from_density
-      << ", lowered to " << kTopologyResolution
-      << " for the topology (the mesh is rasterised exactly, so the points' density"
-         " does not set the cells; features about "
-      << 2 * getMinRadius() << " cells apart separate)";
-    run.resolution.resolution = kTopologyResolution;
-    run.resolution.reason = reason.str();
-    return run.resolution.resolution;
-  }
-  if (may_fill && from_density < kTopologyResolution) {
-    // the fill lets cells be finer than the points, up to kMaxFillCellsPerSpacing
-    const double supported = kMaxFillCellsPerSpacing * run.resolution.extent /
-                             std::max(run.resolution.spacing, 1e-300);
-    const int raised = mesh_ ? kTopologyResolution
-                             : static_cast<int>(std::min<double>(
-                                 kTopologyResolution, std::floor(supported)));
-    if (raised > from_density) {
-      std::ostringstream reason;
-      reason << run.resolution.reason << "; the points alone support " << from_density
-             << ", raised to " << raised << " for the topology ("
-             << (mesh_ ? "the mesh is rasterised exactly"
-                       : "the band is filled between the points, at most " +
-                           std::to_string(int(kMaxFillCellsPerSpacing)) +
-                           " cells a spacing")
-             << "; features about " << 2 * getMinRadius() << " cells apart separate, "
-             << kTopologyResolution
-             << " suits parts whose faces span 1/8 of their size)";
-      run.resolution.resolution = raised;
-      run.resolution.reason = reason.str();
-      run.raised_for_fill = true;
-    }
-  }
-  return run.resolution.resolution;
-}
-
-template <typename PointInT, typename PointOutT>
-void
-VisibilityFeatureEstimation<PointInT, PointOutT>::chooseFill(Run& run) const
-{
-  if (surface_fill_ == SurfaceFill::kMesh && !mesh_)
-    throw Error("the surface fill 'mesh' needs a mesh: call setInputMesh() first");
-  const double spacing_cells = run.resolution.spacing / run.grid.cell_size;
-  std::ostringstream reason;
-  if (surface_fill_ != SurfaceFill::kAuto) {
-    run.fill = surface_fill_;
-    reason << "set by setSurfaceFill()";
-  } else if (mesh_) {
-    run.fill = SurfaceFill::kMesh;
-    reason << "a mesh was given: its triangles rasterised";
-  } else if (surface_->height > 1) {
-    run.fill = SurfaceFill::kOrganized;
-    reason << "an organized cloud (" << surface_->width << " x " << surface_->height
-           << "): its pixel grid, cut at depth jumps";
-  } else if (run.raised_for_fill ||
-             (run.resolution.spacing > 0.0 && spacing_cells > kFillSpacingCells)) {
-    run.fill = SurfaceFill::kLocalTriangles;
-    reason << "point spacing " << spacing_cells << " cells, "
-           << (run.raised_for_fill ? "the resolution was raised beyond the points"
-                                   : "fewer than one point a cell length")
-           << ": the band is filled between neighbouring points";
-  } else {
-    run.fill = SurfaceFill::kPoints;
-    reason << "the cells of the points";
-    if (run.resolution.spacing > 0.0)
-      reason << " (point spacing " << spacing_cells << " cells)";
-  }
-  run.fill_reason = reason.str();
-  // Cells finer than the points: a point is a feature point within the distance in
-  // point spacings (unless set), as its neighbours lie that far apart.
-  if (run.fill != SurfaceFill::kPoints && !point_feature_distance_ &&
-      spacing_cells > 1.0)
-    run.segmentation.point_feature_distance =
-      std::min(run.segmentation.point_feature_distance * spacing_cells,
-               SegmentationParameters::kPointFeatureDistanceRange.max);
 }
 
 template <typename PointInT, typename PointOutT>
@@ -563,7 +422,10 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::computeFeature(PointCloudOut& 
     try {
       Run run = std::move(*run_);
       run_.reset();
+      const Run base = run;
       Results results = computeResults(run, output);
+      if (run.search_cap > 0) // the automatic resolution: look for narrow faces
+        results = searchResolution(base, run, std::move(results), output);
       // Success: the new results replace the previous ones.
       band_ = std::move(results.band);
       free_space_ = std::move(results.free_space);
@@ -595,6 +457,9 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::computeFeature(PointCloudOut& 
 }
 
 } // namespace visfeat
+
+// the resolution, its search, the grid and the fill
+#include <visfeat/impl/visibility_feature_resolution.hpp>
 
 #define PCL_INSTANTIATE_VisibilityFeatureEstimation(T, OUTT)                           \
   template class visfeat::VisibilityFeatureEstimation<T, OUTT>;

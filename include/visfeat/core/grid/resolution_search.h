@@ -1,0 +1,43 @@
+#pragma once
+
+#include <string>
+
+namespace visfeat {
+
+/** \brief The automatic resolution's search goes no finer than this: the public fandisk
+ * mesh at 1024 cells took 87 s and 0.64 GiB on 2 cores (at 512: 15 s, 0.33 GiB), and
+ * there its last narrow faces were resolved already at 512. */
+constexpr int kMaxSearchResolution = 1024;
+
+/** \brief Finer resolutions the search tries after the first, at most. */
+constexpr int kMaxSearchSteps = 2;
+
+/** \brief Each step of the search doubles the resolution. A face's peak does not tell
+ * how much finer it must be: the generated stepped block's risers (21 cells at 256)
+ * peak at 14 rings, because a concave crease hides little, so 17/14 of 256 (320)
+ * looked enough and gave their cores, yet the risers still merged with the treads
+ * (6/10/7 for 16/24/10); 384 gave 11/19/10 and 448 and 512 the exact counts. */
+constexpr double kSearchStep = 2.0;
+
+/** \brief A step shorter than this factor (where the cap stops a doubling) is not
+ * taken: it would change little. */
+constexpr double kMinSearchStep = 1.25;
+
+/** \brief Persistence (rings a peak of the visibility map rises above the valley that
+ * separates it from a higher peak) of a narrow face (visfeat::narrowFaces()) that the
+ * search resolves. Measured: the 7 generated models (10,000 points to dense clouds,
+ * 256 cells) have no peak of persistence 3 or more larger than 84 cells; the narrow
+ * faces of the public fandisk and CGAL part meshes at 256 have 300-950. */
+constexpr int kNarrowFacePersistence = 3;
+
+/** \brief Cells a narrow face needs above its saddle for the search to resolve it, as a
+ * multiple of min_radius^2 (a core's patch): see kNarrowFacePersistence. */
+constexpr int kNarrowFaceCoreAreas = 1;
+
+/** \brief The next resolution of the search: kSearchStep times `resolution`, at most
+ * `cap`; 0 when that leaves less than kMinSearchStep times `resolution`.
+ * \param[in] resolution the current resolution, cells along the longest side
+ * \param[in] cap the finest resolution allowed (fill, memory, kMaxSearchResolution) */
+int nextSearchResolution(int resolution, int cap);
+
+} // namespace visfeat

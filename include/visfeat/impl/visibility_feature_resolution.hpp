@@ -1,0 +1,261 @@
+// VisibilityFeatureEstimation (not for inclusion on its own): the automatic
+// resolution, its search for narrow faces, the grid and the surface fill.
+#pragma once
+
+#include <visfeat/core/grid/resolution_search.h>
+#include <visfeat/core/segmentation/narrow_faces.h>
+#include <visfeat/impl/visibility_feature_estimation.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <sstream>
+
+namespace visfeat {
+
+template <typename PointInT, typename PointOutT>
+void
+VisibilityFeatureEstimation<PointInT, PointOutT>::prepareGrid(Run& run,
+                                                              int resolution) const
+{
+  if (mesh_ && surface_fill_ != SurfaceFill::kPoints) {
+    // the grid covers the mesh too: its triangles reach beyond the points
+    validateMesh(*mesh_);
+    Eigen::Vector3d lo =
+      Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
+    Eigen::Vector3d hi = -lo;
+    for (const PointInT& p : surface_->points)
+      if (pcl::isXYZFinite(p)) {
+        lo = lo.cwiseMin(Eigen::Vector3d(p.x, p.y, p.z));
+        hi = hi.cwiseMax(Eigen::Vector3d(p.x, p.y, p.z));
+      }
+    for (const Eigen::Vector3d& v : mesh_->vertices) {
+      lo = lo.cwiseMin(v);
+      hi = hi.cwiseMax(v);
+    }
+    pcl::PointCloud<pcl::PointXYZ> corners;
+    corners.push_back(pcl::PointXYZ(static_cast<float>(lo.x()),
+                                    static_cast<float>(lo.y()),
+                                    static_cast<float>(lo.z())));
+    corners.push_back(pcl::PointXYZ(static_cast<float>(hi.x()),
+                                    static_cast<float>(hi.y()),
+                                    static_cast<float>(hi.z())));
+    run.grid = gridForCloud(corners, resolution);
+  } else {
+    run.grid = gridForCloud(*surface_, resolution);
+  }
+  chooseFill(run);
+  checkMemoryBudget(run);
+}
+
+template <typename PointInT, typename PointOutT>
+int
+VisibilityFeatureEstimation<PointInT, PointOutT>::chooseResolution(
+  const CloudShape& shape, Run& run) const
+{
+  if (resolution_ != kAutomaticResolution) {
+    run.resolution.resolution = resolution_;
+    run.resolution.extent = shape.extent;
+    run.resolution.reason = "set by setResolution()";
+    // the fill needs the spacing; it is cheap to measure on clouds that may need it
+    if (surface_fill_ == SurfaceFill::kAuto && !mesh_ && hasExtent(shape) &&
+        static_cast<double>(surface_->size()) <
+          kFillCheckPointsPerCell2 * double(resolution_) * double(resolution_)) {
+      const ResolutionEstimate density = estimateResolution(*surface_, shape.extent);
+      run.resolution.spacing = density.spacing;
+      run.resolution.k = density.k;
+      run.resolution.queries = density.queries;
+    }
+    return resolution_;
+  }
+  if (!hasExtent(shape))
+    return GridSpec::kMinResolution; // the grid refuses the cloud, saying why
+  try {
+    run.resolution = estimateResolution(*surface_, shape.extent);
+  } catch (const Error& e) {
+    throw Error(std::string(e.what()) + "; set the resolution (setResolution())");
+  }
+  const bool may_fill = surface_fill_ == SurfaceFill::kAuto ||
+                        surface_fill_ == SurfaceFill::kLocalTriangles ||
+                        surface_fill_ == SurfaceFill::kOrganized ||
+                        (surface_fill_ == SurfaceFill::kMesh && mesh_);
+  const int from_density = run.resolution.resolution;
+  if (mesh_ && may_fill && from_density > kTopologyResolution) {
+    // A mesh's triangles give the band at any resolution: the density of the points
+    // sampled on it says nothing about the features (a public icosahedron mesh sampled
+    // to 1,000,000 points gave 322 cells and 12/28/20; 256 gives 12/30/20).
+    std::ostringstream reason;
+    reason
+      << run.resolution.reason << "; the points alone support " << from_density
+      << ", lowered to " << kTopologyResolution
+      << " for the topology (the mesh is rasterised exactly, so the points' density"
+         " does not set the cells; features about "
+      << 2 * getMinRadius() << " cells apart separate)";
+    run.resolution.resolution = kTopologyResolution;
+    run.resolution.reason = reason.str();
+    run.search_cap = std::min(kMaxSearchResolution, GridSpec::kMaxResolution);
+    run.search_cap_reason = "the search's limit";
+    return run.resolution.resolution;
+  }
+  if (may_fill && from_density < kTopologyResolution) {
+    // the fill lets cells be finer than the points, up to kMaxFillCellsPerSpacing
+    const double supported = kMaxFillCellsPerSpacing * run.resolution.extent /
+                             std::max(run.resolution.spacing, 1e-300);
+    const int raised = mesh_ ? kTopologyResolution
+                             : static_cast<int>(std::min<double>(
+                                 kTopologyResolution, std::floor(supported)));
+    if (raised >= kMinFillRaise * from_density) {
+      std::ostringstream reason;
+      reason << run.resolution.reason << "; the points alone support " << from_density
+             << ", raised to " << raised << " for the topology ("
+             << (mesh_ ? "the mesh is rasterised exactly"
+                       : "the band is filled between the points, at most " +
+                           std::to_string(int(kMaxFillCellsPerSpacing)) +
+                           " cells a spacing")
+             << "; features about " << 2 * getMinRadius() << " cells apart separate, "
+             << kTopologyResolution
+             << " suits parts whose faces span 1/8 of their size)";
+      run.resolution.resolution = raised;
+      run.resolution.reason = reason.str();
+      run.raised_for_fill = true;
+    }
+  }
+  // The search for narrow faces may go finer, as far as the mesh or the fill allow.
+  run.search_cap = std::min(kMaxSearchResolution, GridSpec::kMaxResolution);
+  run.search_cap_reason = "the search's limit";
+  if (!may_fill) {
+    run.search_cap = from_density;
+    run.search_cap_reason = "what the points support without a fill";
+  } else if (!mesh_) {
+    const double supported = kMaxFillCellsPerSpacing * run.resolution.extent /
+                             std::max(run.resolution.spacing, 1e-300);
+    if (supported < run.search_cap) {
+      run.search_cap = static_cast<int>(std::floor(supported));
+      run.search_cap_reason = "what the fill supports (" +
+                              std::to_string(int(kMaxFillCellsPerSpacing)) +
+                              " cells a point spacing)";
+    }
+  }
+  return run.resolution.resolution;
+}
+
+template <typename PointInT, typename PointOutT>
+void
+VisibilityFeatureEstimation<PointInT, PointOutT>::chooseFill(Run& run) const
+{
+  if (surface_fill_ == SurfaceFill::kMesh && !mesh_)
+    throw Error("the surface fill 'mesh' needs a mesh: call setInputMesh() first");
+  const double spacing_cells = run.resolution.spacing / run.grid.cell_size;
+  std::ostringstream reason;
+  if (surface_fill_ != SurfaceFill::kAuto) {
+    run.fill = surface_fill_;
+    reason << "set by setSurfaceFill()";
+  } else if (mesh_) {
+    run.fill = SurfaceFill::kMesh;
+    reason << "a mesh was given: its triangles rasterised";
+  } else if (surface_->height > 1) {
+    run.fill = SurfaceFill::kOrganized;
+    reason << "an organized cloud (" << surface_->width << " x " << surface_->height
+           << "): its pixel grid, cut at depth jumps";
+  } else if (run.raised_for_fill ||
+             (run.resolution.spacing > 0.0 && spacing_cells > kFillSpacingCells)) {
+    run.fill = SurfaceFill::kLocalTriangles;
+    reason << "point spacing " << spacing_cells << " cells, "
+           << (run.raised_for_fill ? "the resolution was raised beyond the points"
+                                   : "fewer than one point a cell length")
+           << ": the band is filled between neighbouring points";
+  } else {
+    run.fill = SurfaceFill::kPoints;
+    reason << "the cells of the points";
+    if (run.resolution.spacing > 0.0)
+      reason << " (point spacing " << spacing_cells << " cells)";
+  }
+  run.fill_reason = reason.str();
+  // Cells finer than the points: a point is a feature point within the distance in
+  // point spacings (unless set), as its neighbours lie that far apart.
+  if (run.fill != SurfaceFill::kPoints && !point_feature_distance_ &&
+      spacing_cells > 1.0)
+    run.segmentation.point_feature_distance =
+      std::min(run.segmentation.point_feature_distance * spacing_cells,
+               SegmentationParameters::kPointFeatureDistanceRange.max);
+}
+
+template <typename PointInT, typename PointOutT>
+typename VisibilityFeatureEstimation<PointInT, PointOutT>::Results
+VisibilityFeatureEstimation<PointInT, PointOutT>::searchResolution(
+  const Run& base, Run& run, Results results, PointCloudOut& output) const
+{
+  const int min_radius = run.segmentation.components.min_radius;
+  const std::size_t min_cells = static_cast<std::size_t>(kNarrowFaceCoreAreas) *
+                                static_cast<std::size_t>(min_radius * min_radius);
+  double discarded_ms = 0.0;
+  for (int step = 0;; ++step) {
+    const std::vector<NarrowFace> faces = narrowFaces(
+      results.band, results.map, min_radius, kNarrowFacePersistence, min_cells);
+    if (faces.empty())
+      break;
+    int narrowest = min_radius;
+    for (const NarrowFace& face : faces)
+      narrowest = std::min(narrowest, face.peak);
+    const int current = run.resolution.resolution;
+    std::ostringstream found;
+    found << faces.size() << " narrow face" << (faces.size() == 1 ? "" : "s")
+          << " at resolution " << current << " (peaks of the visibility map below "
+          << "min_radius " << min_radius << " rings, the narrowest " << narrowest
+          << " rings)";
+    const int next =
+      step < kMaxSearchSteps ? nextSearchResolution(current, run.search_cap) : 0;
+    if (next == 0) {
+      std::ostringstream w;
+      w << found.str() << ": they merge into the edges around them; the resolution "
+        << "stays at " << current << ", "
+        << (step >= kMaxSearchSteps ? "the search's last step" : run.search_cap_reason)
+        << "; "
+        << (run.fill == SurfaceFill::kPoints && run.search_cap <= current
+              ? "fill the band between the points (fill 'triangles') so that the "
+                "resolution can rise"
+              : "set a finer resolution")
+        << " to resolve them, or lower min_radius";
+      run.warnings.push_back(w.str());
+      break;
+    }
+    Run finer = base;
+    finer.resolution.resolution = next;
+    finer.resolution.reason = run.resolution.reason + "; " + found.str() +
+                              ": raised to " + std::to_string(next);
+    const int density =
+      run.resolution.spacing > 0.0
+        ? resolutionForSpacing(run.resolution.extent, run.resolution.spacing)
+        : 0;
+    finer.raised_for_fill = !mesh_ && density > 0 && next > density;
+    finer.search_cap = run.search_cap;
+    finer.search_cap_reason = run.search_cap_reason;
+    PointCloudOut finer_output = output;
+    std::string problem;
+    const auto start = std::chrono::steady_clock::now();
+    try {
+      prepareGrid(finer, next);
+      finer.times.grid_ms = detail::millisecondsSince(start);
+      Results finer_results = computeResults(finer, finer_output);
+      discarded_ms += run.times.total() - run.times.shape_ms;
+      results = std::move(finer_results);
+      run = std::move(finer);
+      output.swap(finer_output);
+      continue;
+    } catch (const Error& e) {
+      problem = e.what();
+    } catch (const std::bad_alloc&) {
+      problem = "out of memory";
+    }
+    run.warnings.push_back(found.str() + ": they merge into the edges around them; " +
+                           "resolution " + std::to_string(next) + " failed (" +
+                           detail::oneLine(problem) +
+                           "); set a finer resolution within the memory limit, or "
+                           "lower min_radius");
+    break;
+  }
+  run.times.search_ms += discarded_ms;
+  return results;
+}
+
+} // namespace visfeat

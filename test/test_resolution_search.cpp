@@ -1,0 +1,134 @@
+// Acceptance: the automatic resolution's search for narrow faces. The stepped block's
+// risers (21 cells at 256) have no core at 256 and merge with the treads; the search
+// finds them and doubles the resolution, where every face is found. Models whose
+// faces are all wide keep 256; where the search may not go finer, a warning says so.
+// About 2 minutes on 2 cores: label acceptance.
+
+#include "band_fixtures.h"
+
+#include <support/cad_models.h>
+#include <visfeat/point_types.h>
+#include <visfeat/visibility_feature_estimation.h>
+
+#include <gtest/gtest.h>
+
+#include <pcl/point_cloud.h>
+#include <pcl/point_types.h>
+
+#include <algorithm>
+#include <memory>
+#include <string>
+
+namespace {
+
+namespace syn = visfeat::synthetic;
+using Estimator =
+  visfeat::VisibilityFeatureEstimation<pcl::PointXYZ, visfeat::PointVisibility>;
+
+/** The chord tolerance of the tessellation at 256 cells, in cells. */
+constexpr double kChordCells = 0.05;
+
+struct MeshRun
+{
+  int resolution = 0;
+  std::string reason;
+  std::vector<std::string> warnings;
+  std::array<std::size_t, 4> counts{};
+};
+
+/** `name` under the rotation of `seed`, its mesh rasterised (20,000 points sampled for
+ * the output), at `resolution` (0: automatic). */
+MeshRun
+runMesh(const std::string& name, std::uint64_t seed, int resolution)
+{
+  const syn::CadModel model =
+    syn::rotated(syn::cadModelByName(name), syn::randomRotation(seed));
+  auto mesh = std::make_shared<visfeat::SurfaceMesh>(
+    syn::tessellateCadModel(model, kChordCells * syn::cellSize(model, 256)).mesh);
+  syn::SamplingOptions options;
+  options.count = 20000;
+  options.seed = seed;
+  Estimator est;
+  est.setInputCloud(visfeat_test::sampleCadCloud(model, options).cloud);
+  est.setInputMesh(mesh);
+  est.setResolution(resolution);
+  pcl::PointCloud<visfeat::PointVisibility> out;
+  est.compute(out);
+  EXPECT_EQ(est.getErrorMessage(), "");
+  MeshRun run;
+  run.resolution = est.getResolutionEstimate().resolution;
+  run.reason = est.getResolutionEstimate().reason;
+  run.warnings = est.getWarnings();
+  const auto counts = est.getSegmentation().classCounts();
+  std::copy(counts.begin(), counts.end(), run.counts.begin());
+  return run;
+}
+
+bool
+mentions(const std::string& text, const std::string& what)
+{
+  return text.find(what) != std::string::npos;
+}
+
+class SteppedBlock : public testing::TestWithParam<std::uint64_t>
+{};
+
+TEST_P(SteppedBlock, SearchResolvesTheRisers)
+{
+  const syn::CadModel truth = syn::cadModelByName("stepped_block");
+  // at 256 the risers merge with the treads
+  const MeshRun coarse = runMesh("stepped_block", GetParam(), 256);
+  EXPECT_LT(coarse.counts[3], truth.faces.size());
+  // the search finds them as narrow faces and doubles the resolution
+  const MeshRun searched = runMesh("stepped_block", GetParam(), 0);
+  EXPECT_EQ(searched.resolution, 512);
+  EXPECT_TRUE(mentions(searched.reason, "narrow faces at resolution 256"))
+    << searched.reason;
+  // every face has its core; the corners where a riser's concave crease ends are not
+  // always separated yet (measured 15/24/10, 16/24/10, 15/22/10 on these rotations;
+  // 6/11/7 - 9/12/7 at 256): the error in vertices and edges at least 3 times smaller
+  EXPECT_EQ(searched.counts[3], truth.faces.size());
+  const auto error = [&](const MeshRun& run) {
+    const auto off = [](std::size_t a, std::size_t b) { return a > b ? a - b : b - a; };
+    return off(run.counts[1], truth.vertices.size()) +
+           off(run.counts[2], truth.curves.size());
+  };
+  EXPECT_LE(3 * error(searched), error(coarse))
+    << searched.counts[1] << "/" << searched.counts[2] << " against "
+    << coarse.counts[1] << "/" << coarse.counts[2] << " at 256";
+  EXPECT_TRUE(searched.warnings.empty()) << searched.warnings.front();
+}
+
+INSTANTIATE_TEST_SUITE_P(Rotations, SteppedBlock, testing::Values(21u, 22u, 23u));
+
+TEST(ResolutionSearch, WideFacesKeep256)
+{
+  for (const std::string name : {"cube", "box_with_hole"}) {
+    const MeshRun run = runMesh(name, 21, 0);
+    EXPECT_EQ(run.resolution, 256) << name;
+    EXPECT_FALSE(mentions(run.reason, "narrow")) << run.reason;
+  }
+}
+
+TEST(ResolutionSearch, WarnsWhereThePointsAloneCannotGoFiner)
+{
+  // the band from the points only (fill 'points'): the dense cloud supports about 256
+  // cells, so the narrow faces stay, and a warning says why
+  const syn::CadModel model =
+    syn::rotated(syn::cadModelByName("stepped_block"), syn::randomRotation(24));
+  Estimator est;
+  est.setInputCloud(visfeat_test::sampleCadCloud(model, 256, 24).cloud);
+  est.setResolution(Estimator::kAutomaticResolution);
+  est.setSurfaceFill(visfeat::SurfaceFill::kPoints);
+  pcl::PointCloud<visfeat::PointVisibility> out;
+  est.compute(out);
+  ASSERT_EQ(est.getErrorMessage(), "");
+  EXPECT_LT(est.getResolutionEstimate().resolution, 320);
+  const auto& warnings = est.getWarnings();
+  const auto narrow = std::find_if(warnings.begin(), warnings.end(), [](const auto& w) {
+    return mentions(w, "narrow face") && mentions(w, "without a fill");
+  });
+  EXPECT_NE(narrow, warnings.end()) << (warnings.empty() ? "" : warnings.front());
+}
+
+} // namespace
