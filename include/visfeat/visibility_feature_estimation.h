@@ -122,8 +122,11 @@ public:
    * spacings per cell (estimateResolution()), raised to kTopologyResolution (256) where
    * the band is filled between the points (at most kMaxFillCellsPerSpacing cells a
    * spacing), and kTopologyResolution for a mesh (setInputMesh()) whatever the density
-   * of its points; what was chosen and why is in getResolutionEstimate() after
-   * compute(). Features must be many cells apart
+   * of its points; then, while the map shows narrow faces (visfeat::narrowFaces(),
+   * faces narrower than 2 min_radius cells), doubled and computed again, at most
+   * kMaxSearchSteps times, up to kMaxSearchResolution and what the mesh, the fill or
+   * the points support (a warning where it cannot go finer); what was chosen and why is
+   * in getResolutionEstimate() after compute(). Features must be many cells apart
    * (about 2 min_radius): 256 for parts whose faces are >= 1/10 of their size, 512 for
    * finer detail; the point spacing must stay below ~0.7 cell. Memory grows with the
    * cube (setMemoryLimit()). */
