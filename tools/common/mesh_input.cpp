@@ -4,6 +4,7 @@
 
 #include "common/arguments.h"
 #include "common/cloud_input.h"
+#include "common/obj_check.h"
 #include "common/tool_main.h"
 
 #include <visfeat/core/common/error.h>
@@ -18,6 +19,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 #include <vector>
 
@@ -126,6 +128,22 @@ stlProblem(const std::string& path)
   if (!(in >> word) || word != "solid")
     return "neither a binary STL (its size does not match its triangle count) nor an "
            "ASCII one (it does not start with 'solid')";
+  // VTK picks its ASCII or binary reader from the bytes (vtksys DetectFileType): a
+  // "solid" file with NUL or 8-bit bytes went to the binary reader, whose triangle
+  // count from bytes 80-83 asked for gigabytes. An ASCII STL is text throughout.
+  in.clear();
+  in.seekg(0);
+  std::uint64_t offset = 0;
+  for (std::istreambuf_iterator<char> it(in), end; it != end; ++it, ++offset) {
+    const auto c = static_cast<unsigned char>(*it);
+    if (!(c >= 0x20 && c < 0x7f) && c != '\n' && c != '\r' && c != '\t')
+      return "an ASCII STL with a byte that is not text at offset " +
+             std::to_string(offset) +
+             " (binary data, or a binary STL of the wrong size)";
+  }
+  in.clear();
+  in.seekg(0);
+  in >> word;
   std::uint64_t vertices = 0;
   bool ended = false;
   while (in >> word) {
@@ -151,6 +169,9 @@ bool
 loadMesh(const std::string& path, visfeat::SurfaceMesh& mesh, std::string& error)
 {
   const std::string ext = lowerExtension(path);
+  std::uintmax_t size = 0;
+  if (!checkInputFile(path, size, error))
+    return false;
   if (ext == ".off") {
     std::ifstream in(path, std::ios::binary);
     try {
@@ -167,6 +188,13 @@ loadMesh(const std::string& path, visfeat::SurfaceMesh& mesh, std::string& error
     const std::string problem = stlProblem(path);
     if (!problem.empty()) {
       error = "'" + path + "': not a valid STL mesh: " + problem;
+      return false;
+    }
+  } else if (ext == ".obj") {
+    // PCL's OBJ reader reads past its buffers on some lines: check them first
+    const std::string problem = objProblem(path);
+    if (!problem.empty()) {
+      error = "'" + path + "': not a valid OBJ mesh: " + problem;
       return false;
     }
   }

@@ -52,9 +52,9 @@ bool toSurfaceMesh(const pcl::PolygonMesh& in,
                    visfeat::SurfaceMesh& out,
                    std::string& error);
 
-/** \brief Read a mesh file (.off by visfeat::readOff, .ply and .obj by PCL, .stl by
- * PCL's VTK reader after stlProblem()). On
- * failure `error` is one line naming the file. */
+/** \brief Read a mesh file (.off by visfeat::readOff, .ply by PCL, .obj by PCL after
+ * objProblem(), .stl by PCL's VTK reader after stlProblem()), after checkInputFile().
+ * On failure `error` is one line naming the file. */
 bool loadMesh(const std::string& path, visfeat::SurfaceMesh& mesh, std::string& error);
 
 /** \brief Load a mesh and sample it (area-weighted, seed kMeshSeed) into an x y z
