@@ -365,6 +365,17 @@ loadCloud(const std::string& path,
 }
 
 std::string
+fieldsList(const pcl::PCLPointCloud2& cloud)
+{
+  if (cloud.fields.empty())
+    return "none";
+  std::string list = cloud.fields[0].name;
+  for (std::size_t f = 1; f < cloud.fields.size(); ++f)
+    list += " " + cloud.fields[f].name;
+  return list;
+}
+
+std::string
 layoutProblem(const pcl::PCLPointCloud2& cloud)
 {
   const std::size_t n = static_cast<std::size_t>(cloud.width) * cloud.height;
@@ -389,8 +400,8 @@ hasXYZ(const pcl::PCLPointCloud2& cloud, std::string& problem)
   for (const char* name : {"x", "y", "z"}) {
     const int index = pcl::getFieldIndex(cloud, name);
     if (index < 0) {
-      problem = std::string("no '") + name +
-                "' field (fields: " + pcl::getFieldsList(cloud) + ")";
+      problem =
+        std::string("no '") + name + "' field (fields: " + fieldsList(cloud) + ")";
       return false;
     }
     if (cloud.fields[static_cast<std::size_t>(index)].count != 1) {

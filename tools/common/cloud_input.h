@@ -40,6 +40,11 @@ bool loadCloud(const std::string& path,
                Eigen::Quaternionf& orientation,
                std::string& error);
 
+/** \brief The names of a cloud's fields separated by spaces, "none" without fields.
+ * pcl::getFieldsList (PCL 1.13) reads before its vector's start when there are none,
+ * as a PLY file without a vertex element gives (found by fuzzing). */
+std::string fieldsList(const pcl::PCLPointCloud2& cloud);
+
 /** \brief What is inconsistent in a cloud's layout, empty when nothing is: data shorter
  * than width x height points, a field of unknown type or outside point_step. */
 std::string layoutProblem(const pcl::PCLPointCloud2& cloud);
