@@ -198,12 +198,19 @@ loadMesh(const std::string& path, visfeat::SurfaceMesh& mesh, std::string& error
       return false;
     }
   }
-  const int rc = quietly([&] {
-    if (ext == ".stl")
-      return pcl::io::loadPolygonFileSTL(path, polygons) > 0 ? 0 : -1;
-    return ext == ".ply" ? pcl::io::loadPLYFile(path, polygons)
-                         : pcl::io::loadOBJFile(path, polygons);
-  });
+  // PCL's readers also throw (std::length_error from an OBJ line fuzzing found):
+  // that is a file they could not parse, not an error of the tool
+  int rc = -1;
+  try {
+    rc = quietly([&] {
+      if (ext == ".stl")
+        return pcl::io::loadPolygonFileSTL(path, polygons) > 0 ? 0 : -1;
+      return ext == ".ply" ? pcl::io::loadPLYFile(path, polygons)
+                           : pcl::io::loadOBJFile(path, polygons);
+    });
+  } catch (const std::exception&) {
+    rc = -1;
+  }
   const std::string format = ext == ".ply" ? "PLY" : ext == ".stl" ? "STL" : "OBJ";
   if (rc < 0) {
     error = "'" + path + "': not a valid " + format +
