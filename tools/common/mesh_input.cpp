@@ -53,14 +53,14 @@ isMeshFile(const std::string& path)
 bool
 toSurfaceMesh(const pcl::PolygonMesh& in, visfeat::SurfaceMesh& out, std::string& error)
 {
-  std::string problem;
-  if (!hasXYZ(in.cloud, problem)) {
-    error = "the mesh's vertices have " + problem;
-    return false;
-  }
   const std::size_t n = static_cast<std::size_t>(in.cloud.width) * in.cloud.height;
   if (in.cloud.data.size() < n * in.cloud.point_step) {
     error = "the mesh's vertex data is truncated";
+    return false;
+  }
+  std::string problem;
+  if (!hasXYZ(in.cloud, problem)) {
+    error = "the mesh's vertices have " + problem;
     return false;
   }
   const pcl::PCLPointField* f[3];
