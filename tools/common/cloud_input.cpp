@@ -18,6 +18,7 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <locale>
 #include <sstream>
 #include <system_error>
 #include <vector>
@@ -250,6 +251,42 @@ checkDataLine(const std::string& path,
   return true;
 }
 
+/** \brief PCL 1.13's PCDReader::readHeader does not stop at DATA: it reads on while a
+ * line is empty, a comment (its first word starts with '#') or starts with a keyword,
+ * matched by prefix ("WIDTHS" is WIDTH), and a later FIELDS, POINTS or DATA line
+ * redefines the cloud or moves its body (an ascii header then read as binary: a huge
+ * allocation found by fuzzing). After the DATA line the check validated (line
+ * `line_number`), the first line PCL reads on that is neither empty nor a comment must
+ * not start with a keyword. */
+bool
+checkAfterData(std::istream& in, int line_number, std::string& problem)
+{
+  static const char* const keywords[] = {"VERSION",   "FIELDS", "COLUMNS", "SIZE",
+                                         "TYPE",      "COUNT",  "WIDTH",   "HEIGHT",
+                                         "VIEWPOINT", "POINTS", "DATA"};
+  for (std::string line; std::getline(in, line);) {
+    ++line_number;
+    if (line.empty())
+      continue;
+    std::istringstream words(line);
+    words.imbue(std::locale::classic());
+    std::string first;
+    words >> first;
+    if (!first.empty() && first[0] == '#')
+      continue;
+    for (const std::string keyword : keywords)
+      if (first.compare(0, keyword.size(), keyword) == 0) {
+        problem = "invalid PCD header: " +
+                  (keyword == "DATA" ? std::string("a second DATA line")
+                                     : "a " + keyword + " line after DATA") +
+                  " (line " + std::to_string(line_number) + ")";
+        return false;
+      }
+    return true;
+  }
+  return true;
+}
+
 } // namespace
 
 bool
@@ -262,9 +299,19 @@ checkPcdHeader(const std::string& path, std::uintmax_t file_size, std::string& p
   for (int line_number = 1; line_number <= 64 && std::getline(in, line);
        ++line_number) {
     consumed += line.size() + 1;
-    if (!line.empty() && line.back() == '\r')
+    if (line.empty())
+      continue;
+    if (line.back() == '\r')
       line.pop_back();
-    if (line.empty() || line[0] == '#')
+    // PCL skips only empty lines: one of spaces (or a lone CR) ends its header, before
+    // DATA, and it reads no points
+    if (line.find_first_not_of(" \t\v\f\r") == std::string::npos) {
+      problem =
+        "invalid PCD header: a blank line that is not empty before DATA (line " +
+        std::to_string(line_number) + ")";
+      return false;
+    }
+    if (line[0] == '#')
       continue;
     for (char c : line)
       if (c != '\t' && !std::isprint(static_cast<unsigned char>(c))) {
@@ -279,7 +326,8 @@ checkPcdHeader(const std::string& path, std::uintmax_t file_size, std::string& p
     for (std::string w; words >> w;)
       values.push_back(w);
     if (key == "DATA")
-      return checkDataLine(path, header, values, consumed, file_size, problem);
+      return checkDataLine(path, header, values, consumed, file_size, problem) &&
+             checkAfterData(in, line_number, problem);
     if (!readHeaderLine(line, key, values, header, problem))
       return false;
   }

@@ -167,6 +167,34 @@ TEST_F(PcdGuards, RefusesDataTooShortForItsPointsBeforePclAllocatesThem)
     "points take 24)");
 }
 
+TEST_F(PcdGuards, RefusesWhatPclReadsAsHeaderAfterDataOrBeforeIt)
+{
+  const std::string head = kXYZ + "WIDTH 1\nPOINTS 1\n";
+  // PCL 1.13 reads header lines on after DATA: a later DATA line moved the body (an
+  // ascii file read as binary_compressed, a huge allocation found by fuzzing)
+  EXPECT_EQ(problemOf(head + "DATA ascii\nVERSION .7\nDATA binary_compressed\n" +
+                      std::string(8, '\0')),
+            "invalid PCD header: a VERSION line after DATA (line 7)");
+  EXPECT_EQ(problemOf(head + "DATA ascii\n\n# c\nDATA binary\n1 2 3\n"),
+            "invalid PCD header: a second DATA line (line 8)");
+  // keywords match by prefix
+  EXPECT_EQ(problemOf(head + "DATA ascii\nPOINTSX 9\n1 2 3\n"),
+            "invalid PCD header: a POINTS line after DATA (line 7)");
+  // empty lines and comments after DATA are skipped by both; the first other line
+  // ends the header
+  EXPECT_EQ(problemOf(head + "DATA ascii\n\n# c\n1 2 3\nDATA binary\n"), "");
+  EXPECT_EQ(problemOf(head + "DATA binary\n" + std::string("\x01\0\0\0DATA\n", 9) +
+                      std::string(4, '\0')),
+            "");
+  // a blank line that is not empty (a lone CR) ends PCL's header before DATA
+  EXPECT_EQ(problemOf("FIELDS x y z\r\n\r\nSIZE 4 4 4\r\nTYPE F F F\r\nWIDTH 1\r\n"
+                      "POINTS 1\r\nDATA ascii\r\n1 2 3\r\n"),
+            "invalid PCD header: a blank line that is not empty before DATA (line 2)");
+  EXPECT_EQ(problemOf("FIELDS x y z\r\nSIZE 4 4 4\r\nTYPE F F F\r\nWIDTH 1\r\n"
+                      "POINTS 1\r\nDATA ascii\r\n1 2 3\r\n"),
+            "");
+}
+
 TEST(LayoutProblem, NamesWhatDoesNotHoldTogether)
 {
   pcl::PCLPointCloud2 cloud;
