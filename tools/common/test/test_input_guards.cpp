@@ -176,7 +176,7 @@ TEST_F(PcdGuards, RefusesWhatPclReadsAsHeaderAfterDataOrBeforeIt)
                       std::string(8, '\0')),
             "invalid PCD header: a VERSION line after DATA (line 7)");
   EXPECT_EQ(problemOf(head + "DATA ascii\n\n# c\nDATA binary\n1 2 3\n"),
-            "invalid PCD header: a second DATA line (line 8)");
+            "invalid PCD header: a second DATA line (line 9)");
   // keywords match by prefix
   EXPECT_EQ(problemOf(head + "DATA ascii\nPOINTSX 9\n1 2 3\n"),
             "invalid PCD header: a POINTS line after DATA (line 7)");
