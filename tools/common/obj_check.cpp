@@ -18,10 +18,22 @@ namespace fs = std::filesystem;
 
 namespace {
 
-/** \brief A line as PCL's OBJ and MTL readers see it: trimmed of white space
- * (boost::trim), the text between the trimmed ends in `trimmed`, split at spaces, tabs
- * and carriage returns with runs merged (boost::split, token_compress_on): at least one
- * token, empty for a blank line. */
+/** \brief PCL 1.13's OBJ and MTL readers split a line that is not empty with
+ * pcl::split at spaces, tabs and CRs, which gives no token at all for a line of only
+ * those, and read its first token anyway: a crash on the first line (a CRLF file
+ * starting with a blank line), a use after free later (found by fuzzing). */
+bool
+blankButNotEmpty(const std::string& line)
+{
+  return !line.empty() && line.find_first_not_of(" \t\r") == std::string::npos;
+}
+
+const char* const kBlankLine =
+  "a line of only spaces, tabs or CRs (PCL's reader fails on it: make it empty)";
+
+/** \brief A line as PCL's OBJ and MTL readers see it (refuse blankButNotEmpty() lines
+ * first): trimmed of white space, the text between the trimmed ends in `trimmed`,
+ * split at spaces, tabs and carriage returns with runs merged: at least one token. */
 std::vector<std::string>
 pclTokens(const std::string& line, std::string& trimmed)
 {
@@ -86,6 +98,8 @@ mtlProblem(const fs::path& path)
   for (std::size_t n = 1; std::getline(in, line); ++n) {
     if (line.empty())
       continue;
+    if (blankButNotEmpty(line))
+      return name + " line " + std::to_string(n) + ": " + kBlankLine;
     const std::vector<std::string> t = pclTokens(line, trimmed);
     const std::string& key = t[0];
     const bool attribute = key == "Ka" || key == "Kd" || key == "Ks" ||
@@ -112,10 +126,12 @@ objLineProblem(const fs::path& path,
                std::size_t& vertices,
                std::size_t& normals)
 {
+  const std::string where = "line " + std::to_string(n) + ": ";
+  if (blankButNotEmpty(line))
+    return where + kBlankLine;
   std::string trimmed;
   const std::vector<std::string> t = pclTokens(line, trimmed);
   const std::string& key = t[0];
-  const std::string where = "line " + std::to_string(n) + ": ";
   if (key == "v" || key == "vn") {
     if (t.size() < 4 || !finiteFloat(t[1]) || !finiteFloat(t[2]) || !finiteFloat(t[3]))
       return where + "'" + key + "' needs 3 finite coordinates";

@@ -104,6 +104,25 @@ TEST_F(InputGuards, StlProblemRefusesAsciiWithBinaryBytes)
     "binary STL of the wrong size)");
 }
 
+TEST_F(InputGuards, ObjProblemRefusesLinesOfOnlySpacesTabsOrCRs)
+{
+  // PCL 1.13 read the first token of a line that has none: a null dereference on a
+  // first line, a use after free on a later one (fuzz_ply_obj)
+  const std::string blank =
+    "a line of only spaces, tabs or CRs (PCL's reader fails on it: make it empty)";
+  EXPECT_EQ(vt::objProblem(write("a.obj", std::string("\r\n") + kTriangleObj)),
+            "line 1: " + blank);
+  EXPECT_EQ(vt::objProblem(write("b.obj", std::string("#") + std::string(40, 'a') +
+                                            "\n \t\n" + kTriangleObj)),
+            "line 2: " + blank);
+  write("m.mtl", "newmtl red\n\r\nKd 1 0 0\n");
+  EXPECT_EQ(
+    vt::objProblem(write("c.obj", std::string("mtllib m.mtl\n") + kTriangleObj)),
+    "line 1: material library 'm.mtl' line 2: " + blank);
+  // empty lines, and a vertical tab (not a separator for PCL), are fine
+  EXPECT_EQ(vt::objProblem(write("d.obj", std::string("\n\v\n") + kTriangleObj)), "");
+}
+
 TEST(ReadOff, RefusesAFaceCountThatWrapsAround)
 {
   // n + 1 wrapped to 0 and the indices were read past the line's tokens
