@@ -58,6 +58,7 @@ set(VISFEAT_BAD_INPUT_CASES
   "pcd_second_fields_line|invalid PCD header: a second FIELDS line"
   "pcd_second_data_line|invalid PCD header: a second DATA line"
   "obj_blank_first_line|not a valid OBJ mesh: line 1: a line of only spaces, tabs or CRs"
+  "ply_vertex_list_property|not a valid PLY file: line 7: a list property ('idx') of the vertex element"
   "obj_garbage|not a valid OBJ mesh"
   "obj_bad_index|vertex index 8 out of range"
   "obj_two_vertex_face|has 2 vertices"

@@ -3,6 +3,7 @@
 #include "common/cloud_input.h"
 
 #include "common/arguments.h"
+#include "common/mesh_input.h"
 #include "common/tool_main.h"
 
 #include <pcl/common/io.h>
@@ -395,6 +396,11 @@ loadCloud(const std::string& path,
       return false;
     }
   } else {
+    const std::string problem = plyProblem(path);
+    if (!problem.empty()) {
+      error = "'" + path + "': not a valid PLY file: " + problem;
+      return false;
+    }
     if (quietly(
           [&] { return pcl::io::loadPLYFile(path, cloud, origin, orientation); }) < 0) {
       error =

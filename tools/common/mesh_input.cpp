@@ -50,6 +50,42 @@ isMeshFile(const std::string& path)
   return false;
 }
 
+std::string
+plyProblem(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  std::string line, element;
+  bool red = false;
+  for (int n = 1; n <= 1024 && std::getline(in, line); ++n) {
+    std::istringstream words(line);
+    std::string keyword, kind, size_type, value_type, name;
+    words >> keyword;
+    if (keyword == "end_header")
+      break;
+    if (keyword == "element") {
+      words >> element;
+      red = false;
+    }
+    if (keyword != "property" || element != "vertex" || !(words >> kind))
+      continue;
+    const std::string where = "line " + std::to_string(n) + ": ";
+    if (kind == "list") {
+      words >> size_type >> value_type >> name;
+      return where + "a list property ('" + name.substr(0, 40) +
+             "') of the vertex element (PCL's reader aborts when its length varies)";
+    }
+    words >> name;
+    red = red || name == "red";
+    // PCL packs the colour into a field it adds at 'red'; 'blue' without it moved the
+    // next property past the point (an assertion in PCL, found by fuzzing)
+    if ((name == "green" || name == "blue") && !red)
+      return where + "a '" + name +
+             "' property of the vertex element without a 'red' before it (PCL's "
+             "reader aborts on it)";
+  }
+  return "";
+}
+
 bool
 toSurfaceMesh(const pcl::PolygonMesh& in, visfeat::SurfaceMesh& out, std::string& error)
 {
@@ -188,6 +224,12 @@ loadMesh(const std::string& path, visfeat::SurfaceMesh& mesh, std::string& error
     const std::string problem = stlProblem(path);
     if (!problem.empty()) {
       error = "'" + path + "': not a valid STL mesh: " + problem;
+      return false;
+    }
+  } else if (ext == ".ply") {
+    const std::string problem = plyProblem(path);
+    if (!problem.empty()) {
+      error = "'" + path + "': not a valid PLY mesh: " + problem;
       return false;
     }
   } else if (ext == ".obj") {

@@ -123,6 +123,37 @@ TEST_F(InputGuards, ObjProblemRefusesLinesOfOnlySpacesTabsOrCRs)
   EXPECT_EQ(vt::objProblem(write("d.obj", std::string("\n\v\n") + kTriangleObj)), "");
 }
 
+TEST_F(InputGuards, PlyProblemRefusesAListPropertyOfTheVertexElement)
+{
+  // PCL 1.13 aborted (assert) when its length varied from vertex to vertex
+  const std::string head = "ply\nformat ascii 1.0\nelement vertex 2\nproperty float x\n"
+                           "property float y\nproperty float z\n";
+  EXPECT_EQ(
+    vt::plyProblem(write("a.ply", head + "property list uchar int idx\n"
+                                         "end_header\n0 0 0 1 1\n1 1 1 2 1 1\n")),
+    "line 7: a list property ('idx') of the vertex element (PCL's reader aborts "
+    "when its length varies)");
+  // faces have lists, and a header keyword after end_header is data
+  EXPECT_EQ(
+    vt::plyProblem(write("b.ply", head + "element face 1\n"
+                                         "property list uchar int vertex_indices\n"
+                                         "end_header\n0 0 0\n1 0 0\n3 0 1 0\n")),
+    "");
+  EXPECT_EQ(vt::plyProblem(write("c.ply", head + "end_header\nproperty list a b c\n")),
+            "");
+  // 'blue' without 'red': the next property was written past the point (assertion)
+  EXPECT_EQ(
+    vt::plyProblem(write("d.ply", head + "property uchar blue\nproperty float nx\n"
+                                         "end_header\n0 0 0 0 0\n1 1 1 0 0\n")),
+    "line 7: a 'blue' property of the vertex element without a 'red' before it "
+    "(PCL's reader aborts on it)");
+  EXPECT_EQ(
+    vt::plyProblem(write("e.ply", head + "property uchar red\nproperty uchar "
+                                         "green\nproperty uchar blue\nend_header\n"
+                                         "0 0 0 0 0 0\n1 1 1 0 0 0\n")),
+    "");
+}
+
 TEST(ReadOff, RefusesAFaceCountThatWrapsAround)
 {
   // n + 1 wrapped to 0 and the indices were read past the line's tokens
