@@ -6,20 +6,25 @@
 #   scripts/install_deps.sh           the build, test and demo dependencies
 #   scripts/install_deps.sh --peers   also libcgal-dev, for the optional CGAL peer of
 #                                     visfeat_eval (visfeat itself never needs CGAL)
+#   scripts/install_deps.sh --fuzz    also clang, its runtime libraries (libFuzzer,
+#                                     the sanitizers) and libomp-dev (clang's OpenMP),
+#                                     for the fuzz targets (scripts/test.sh --fuzz)
 # xvfb + xauth: the tool's pictures (-png) render with VTK, which on Debian needs an X
 # display even offscreen; headless machines (CI, the demo) run it under xvfb-run.
 set -euo pipefail
 
 with_peers=0
+with_fuzz=0
 for arg in "$@"; do
   case "$arg" in
     --peers) with_peers=1 ;;
+    --fuzz) with_fuzz=1 ;;
     -h | --help)
-      sed -n '2,8p' "$0" | sed 's/^# \{0,1\}//'
+      sed -n '2,11p' "$0" | sed 's/^# \{0,1\}//'
       exit 0
       ;;
     *)
-      echo "install_deps: unknown argument '$arg' (known: --peers)" >&2
+      echo "install_deps: unknown argument '$arg' (known: --peers, --fuzz)" >&2
       exit 1
       ;;
   esac
@@ -39,6 +44,9 @@ packages=(
 )
 if [ "$with_peers" -eq 1 ]; then
   packages+=(libcgal-dev)
+fi
+if [ "$with_fuzz" -eq 1 ]; then
+  packages+=(clang libclang-rt-dev libomp-dev)
 fi
 
 installed() {

@@ -2,27 +2,54 @@
 # Builds visfeat and runs the whole test suite.
 #   scripts/test.sh              Release build in build/ (or $BUILD_DIR)
 #   scripts/test.sh --sanitize   ASan+UBSan RelWithDebInfo build in build-asan/
-# Warnings are errors. Exits non-zero on any failure.
+#   scripts/test.sh --fuzz       clang libFuzzer build in build-fuzz/: the fuzz targets
+#                                of the readers replay their corpus (ctest -L fuzz),
+#                                then each fuzzes for $FUZZ_SECONDS (default 30) s
+# Warnings are errors. Exits non-zero on any failure (with --fuzz: a crash, a hang
+# over 10 s, a sanitizer report or over 2 GiB of memory; the input is left in
+# build-fuzz/fuzz_runs/<target>/).
 set -euo pipefail
 
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$root"
 
-sanitize=0
+mode=normal
 for arg in "$@"; do
   case "$arg" in
-    --sanitize) sanitize=1 ;;
+    --sanitize) mode=sanitize ;;
+    --fuzz) mode=fuzz ;;
     -h|--help)
-      sed -n '2,5p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'
+      sed -n '2,10p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'
       exit 0 ;;
     *) echo "test.sh: unknown argument: $arg" >&2; exit 2 ;;
   esac
 done
 
+jobs="$(nproc 2>/dev/null || echo 2)"
+
+if [ "$mode" = fuzz ]; then
+  bash "$root/scripts/install_deps.sh" --fuzz
+  source "$root/scripts/fuzz_run.sh"
+  build_dir="${BUILD_DIR:-build-fuzz}"
+  echo "== configure ($build_dir, clang, libFuzzer + ASan + UBSan)"
+  CC=clang CXX=clang++ cmake -S . -B "$build_dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+    -DVISFEAT_FUZZ=ON -DVISFEAT_WARNINGS_AS_ERRORS=ON -DBUILD_TESTING=ON \
+    -DVISFEAT_BUILD_TESTS=OFF -DVISFEAT_BUILD_SAMPLES=OFF -DVISFEAT_PICTURES=OFF
+  targets=($(fuzz_targets "$root"))
+  echo "== build (${targets[*]})"
+  cmake --build "$build_dir" -j"$jobs" --target "${targets[@]}"
+  echo "== replay the corpus"
+  ctest --test-dir "$build_dir" --output-on-failure -L fuzz
+  for t in "${targets[@]}"; do
+    fuzz_run "$root" "$build_dir" "$t" "${FUZZ_SECONDS:-30}"
+  done
+  echo "== fuzzing found nothing (${targets[*]}, ${FUZZ_SECONDS:-30} s each)"
+  exit 0
+fi
+
 bash "$root/scripts/install_deps.sh"
 
-jobs="$(nproc 2>/dev/null || echo 2)"
-if [ "$sanitize" -eq 1 ]; then
+if [ "$mode" = sanitize ]; then
   build_dir="${BUILD_DIR:-build-asan}"
   cmake_args=(-DCMAKE_BUILD_TYPE=RelWithDebInfo -DVISFEAT_SANITIZE=ON)
   # LeakSanitizer reports one-off allocations in third-party libraries' static

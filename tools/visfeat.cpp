@@ -199,7 +199,7 @@ loadInput(const vt::Options& opt,
     print_warn("-mesh_points / -mesh_spacing ignored: '%s' is a point cloud\n",
                opt.input.c_str());
   print_info("Available dimensions: ");
-  print_value("%s\n", pcl::getFieldsList(in.cloud).c_str());
+  print_value("%s\n", vt::fieldsList(in.cloud).c_str());
   return true;
 }
 

@@ -172,7 +172,7 @@ writeClouds(const Options& opt,
   print_info(" ms : ");
   print_value("%u", merged.width * merged.height);
   print_info(" points; fields: ");
-  print_value("%s", pcl::getFieldsList(merged).c_str());
+  print_value("%s", fieldsList(merged).c_str());
   print_info("]\n");
   if (opt.voxels.empty())
     return true;

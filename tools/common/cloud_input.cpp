@@ -3,6 +3,7 @@
 #include "common/cloud_input.h"
 
 #include "common/arguments.h"
+#include "common/mesh_input.h"
 #include "common/tool_main.h"
 
 #include <pcl/common/io.h>
@@ -18,6 +19,7 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <locale>
 #include <sstream>
 #include <system_error>
 #include <vector>
@@ -33,6 +35,8 @@ struct PcdHeader
 {
   std::size_t fields = 0, sizes = 0, types = 0, counts = 0;
   std::vector<long long> size_values, count_values;
+  std::vector<std::string> type_values;
+  std::set<std::string> keys; // the keywords seen: each may come once
   bool have_width = false, have_points = false;
   long long width = 0, height = 1, points = -1;
 };
@@ -60,6 +64,13 @@ readHeaderLine(const std::string& line,
                PcdHeader& header,
                std::string& problem)
 {
+  // PCL reads every line it knows, so a second FIELDS (or SIZE, ...) line redefined the
+  // fields after the check had counted the first: a cloud whose fields lay outside its
+  // points (heap overflow found by fuzzing)
+  if (!header.keys.insert(key == "COLUMNS" ? "FIELDS" : key).second) {
+    problem = "invalid PCD header: a second " + key + " line";
+    return false;
+  }
   if (key == "VERSION" || key == "VIEWPOINT")
     return true;
   if (key == "FIELDS" || key == "COLUMNS") {
@@ -77,6 +88,7 @@ readHeaderLine(const std::string& line,
       }
   } else if (key == "TYPE") {
     header.types = values.size();
+    header.type_values = values;
     for (const auto& t : values)
       if (t != "F" && t != "I" && t != "U") {
         problem = "invalid PCD header: field type '" + t + "' in TYPE";
@@ -88,6 +100,11 @@ readHeaderLine(const std::string& line,
       problem = "invalid PCD header: bad COUNT line";
       return false;
     }
+    for (long long c : header.count_values)
+      if (c == 0) {
+        problem = "invalid PCD header: a field of COUNT 0";
+        return false;
+      }
   } else if (key == "WIDTH" || key == "HEIGHT" || key == "POINTS") {
     std::vector<long long> numbers;
     if (values.size() != 1 || !nonNegativeIntegers(values, numbers)) {
@@ -110,11 +127,49 @@ readHeaderLine(const std::string& line,
   return true;
 }
 
+/** \brief The block of a binary_compressed PCD after the header (`consumed` bytes of
+ * the file at `path`): its compressed and uncompressed sizes (32-bit little endian)
+ * must fit the file and the points (`data_bytes`). PCL allocates the uncompressed
+ * size it reads there. */
+bool
+checkCompressedBlock(const std::string& path,
+                     std::uintmax_t consumed,
+                     std::uintmax_t file_size,
+                     std::uintmax_t data_bytes,
+                     std::string& problem)
+{
+  unsigned char sizes[8] = {};
+  std::ifstream in(path, std::ios::binary);
+  if (consumed + 8 > file_size || !in.seekg(static_cast<std::streamoff>(consumed)) ||
+      !in.read(reinterpret_cast<char*>(sizes), sizeof sizes)) {
+    problem = "PCD data is truncated (no compressed block)";
+    return false;
+  }
+  auto le32 = [&sizes](int at) {
+    return std::uintmax_t(sizes[at]) | std::uintmax_t(sizes[at + 1]) << 8 |
+           std::uintmax_t(sizes[at + 2]) << 16 | std::uintmax_t(sizes[at + 3]) << 24;
+  };
+  const std::uintmax_t compressed = le32(0), uncompressed = le32(4);
+  if (consumed + 8 + compressed > file_size) {
+    problem = "PCD data is truncated (the compressed block has " +
+              std::to_string(compressed) + " bytes)";
+    return false;
+  }
+  if (uncompressed != data_bytes) {
+    problem = "PCD data is corrupt (the compressed block unpacks to " +
+              std::to_string(uncompressed) + " bytes, the points take " +
+              std::to_string(data_bytes) + ")";
+    return false;
+  }
+  return true;
+}
+
 /** \brief The DATA line ends the header: the lines before it must agree, its type must
  * be known, and the file (`file_size` bytes, the header `consumed` of them) must be
  * long enough for the announced points. */
 bool
-checkDataLine(const PcdHeader& header,
+checkDataLine(const std::string& path,
+              const PcdHeader& header,
               const std::vector<std::string>& values,
               std::uintmax_t consumed,
               std::uintmax_t file_size,
@@ -135,7 +190,30 @@ checkDataLine(const PcdHeader& header,
               (header.have_width ? "POINTS" : "WIDTH") + " line";
     return false;
   }
-  if (header.width * header.height != header.points) {
+  for (std::size_t f = 0; f < fields; ++f)
+    if (header.type_values[f] == "F" && header.size_values[f] < 4) {
+      problem = "invalid PCD header: a float field (TYPE F) of SIZE " +
+                std::to_string(header.size_values[f]) + " (4 or 8)";
+      return false;
+    }
+  // the counts come from the file: keep the products below in range (every value of
+  // every point takes at least a byte, whatever the DATA type)
+  const auto limit = static_cast<long long>(std::min<std::uintmax_t>(
+    file_size, static_cast<std::uintmax_t>(std::numeric_limits<int>::max())));
+  for (std::size_t f = 0; f < header.count_values.size(); ++f)
+    if (header.count_values[f] > limit) {
+      problem = "invalid PCD header: COUNT " + std::to_string(header.count_values[f]) +
+                " is larger than the file";
+      return false;
+    }
+  if (header.points > static_cast<long long>(file_size)) {
+    problem = "PCD data is truncated (the header announces " +
+              std::to_string(header.points) + " points)";
+    return false;
+  }
+  if ((header.height != 0 &&
+       header.width > std::numeric_limits<long long>::max() / header.height) ||
+      header.width * header.height != header.points) {
     problem = "invalid PCD header: WIDTH x HEIGHT differs from POINTS";
     return false;
   }
@@ -144,22 +222,68 @@ checkDataLine(const PcdHeader& header,
     problem = "invalid PCD header: unknown DATA type '" + type + "'";
     return false;
   }
+  std::uintmax_t point_bytes = 0, point_values = 0;
+  for (std::size_t f = 0; f < fields; ++f) {
+    const auto count =
+      static_cast<std::uintmax_t>(header.counts ? header.count_values[f] : 1);
+    point_bytes += static_cast<std::uintmax_t>(header.size_values[f]) * count;
+    point_values += count;
+  }
+  const auto points = static_cast<std::uintmax_t>(header.points);
+  if (type == "ascii" && points > 0 &&
+      consumed + 2 * point_values * points > file_size + 1) {
+    // n values take at least 2n - 1 bytes: PCL would first allocate the points
+    problem = "PCD data is truncated or corrupt (the header announces " +
+              std::to_string(header.points) + " points of " +
+              std::to_string(point_values) + " values)";
+    return false;
+  }
   if (type == "binary") {
-    std::uintmax_t point_bytes = 0;
-    for (std::size_t f = 0; f < fields; ++f)
-      point_bytes +=
-        static_cast<std::uintmax_t>(header.size_values[f]) *
-        static_cast<std::uintmax_t>(header.counts ? header.count_values[f] : 1);
     if (consumed + point_bytes * static_cast<std::uintmax_t>(header.points) >
         file_size) {
       problem = "PCD data is truncated (the header announces " +
                 std::to_string(header.points) + " points)";
       return false;
     }
-  } else if (type == "binary_compressed" && header.points > 0 &&
-             consumed + 8 > file_size) {
-    problem = "PCD data is truncated (no compressed block)";
-    return false;
+  } else if (type == "binary_compressed" && header.points > 0) {
+    return checkCompressedBlock(path, consumed, file_size, point_bytes * points,
+                                problem);
+  }
+  return true;
+}
+
+/** \brief PCL 1.13's PCDReader::readHeader does not stop at DATA: it reads on while a
+ * line is empty, a comment (its first word starts with '#') or starts with a keyword,
+ * matched by prefix ("WIDTHS" is WIDTH), and a later FIELDS, POINTS or DATA line
+ * redefines the cloud or moves its body (an ascii header then read as binary: a huge
+ * allocation found by fuzzing). After the DATA line the check validated (line
+ * `line_number`), the first line PCL reads on that is neither empty nor a comment must
+ * not start with a keyword. */
+bool
+checkAfterData(std::istream& in, int line_number, std::string& problem)
+{
+  static const char* const keywords[] = {"VERSION",   "FIELDS", "COLUMNS", "SIZE",
+                                         "TYPE",      "COUNT",  "WIDTH",   "HEIGHT",
+                                         "VIEWPOINT", "POINTS", "DATA"};
+  for (std::string line; std::getline(in, line);) {
+    ++line_number;
+    if (line.empty())
+      continue;
+    std::istringstream words(line);
+    words.imbue(std::locale::classic());
+    std::string first;
+    words >> first;
+    if (!first.empty() && first[0] == '#')
+      continue;
+    for (const std::string keyword : keywords)
+      if (first.compare(0, keyword.size(), keyword) == 0) {
+        problem = "invalid PCD header: " +
+                  (keyword == "DATA" ? std::string("a second DATA line")
+                                     : "a " + keyword + " line after DATA") +
+                  " (line " + std::to_string(line_number) + ")";
+        return false;
+      }
+    return true;
   }
   return true;
 }
@@ -176,9 +300,19 @@ checkPcdHeader(const std::string& path, std::uintmax_t file_size, std::string& p
   for (int line_number = 1; line_number <= 64 && std::getline(in, line);
        ++line_number) {
     consumed += line.size() + 1;
-    if (!line.empty() && line.back() == '\r')
+    if (line.empty())
+      continue;
+    if (line.back() == '\r')
       line.pop_back();
-    if (line.empty() || line[0] == '#')
+    // PCL skips only empty lines: one of spaces (or a lone CR) ends its header, before
+    // DATA, and it reads no points
+    if (line.find_first_not_of(" \t\v\f\r") == std::string::npos) {
+      problem =
+        "invalid PCD header: a blank line that is not empty before DATA (line " +
+        std::to_string(line_number) + ")";
+      return false;
+    }
+    if (line[0] == '#')
       continue;
     for (char c : line)
       if (c != '\t' && !std::isprint(static_cast<unsigned char>(c))) {
@@ -193,12 +327,43 @@ checkPcdHeader(const std::string& path, std::uintmax_t file_size, std::string& p
     for (std::string w; words >> w;)
       values.push_back(w);
     if (key == "DATA")
-      return checkDataLine(header, values, consumed, file_size, problem);
+      return checkDataLine(path, header, values, consumed, file_size, problem) &&
+             checkAfterData(in, line_number, problem);
     if (!readHeaderLine(line, key, values, header, problem))
       return false;
   }
   problem = "not a PCD file (no DATA line in the header)";
   return false;
+}
+
+bool
+checkInputFile(const std::string& path, std::uintmax_t& size, std::string& error)
+{
+  std::error_code ec;
+  const fs::file_status status = fs::status(path, ec);
+  if (!fs::exists(status)) {
+    error = "'" + path + "': no such file";
+    return false;
+  }
+  if (fs::is_directory(status)) {
+    error = "'" + path + "': is a directory";
+    return false;
+  }
+  // a FIFO or a device would block or never end (PCL's readers loop until EOF)
+  if (!fs::is_regular_file(status)) {
+    error = "'" + path + "': not a regular file";
+    return false;
+  }
+  if (!std::ifstream(path, std::ios::binary)) {
+    error = "'" + path + "': cannot open: " + std::strerror(errno);
+    return false;
+  }
+  size = fs::file_size(path, ec);
+  if (ec || size == 0) {
+    error = "'" + path + "': file is empty";
+    return false;
+  }
+  return true;
 }
 
 bool
@@ -216,25 +381,9 @@ loadCloud(const std::string& path,
             "' (expected .pcd, .ply, .obj, .off or .stl)";
     return false;
   }
-  std::error_code ec;
-  const fs::file_status status = fs::status(path, ec);
-  if (!fs::exists(status)) {
-    error = "'" + path + "': no such file";
+  std::uintmax_t size = 0;
+  if (!checkInputFile(path, size, error))
     return false;
-  }
-  if (fs::is_directory(status)) {
-    error = "'" + path + "': is a directory";
-    return false;
-  }
-  if (!std::ifstream(path, std::ios::binary)) {
-    error = "'" + path + "': cannot open: " + std::strerror(errno);
-    return false;
-  }
-  const std::uintmax_t size = fs::file_size(path, ec);
-  if (ec || size == 0) {
-    error = "'" + path + "': file is empty";
-    return false;
-  }
   if (ext == ".pcd") {
     std::string problem;
     if (!checkPcdHeader(path, size, problem)) {
@@ -247,6 +396,11 @@ loadCloud(const std::string& path,
       return false;
     }
   } else {
+    const std::string problem = plyProblem(path);
+    if (!problem.empty()) {
+      error = "'" + path + "': not a valid PLY file: " + problem;
+      return false;
+    }
     if (quietly(
           [&] { return pcl::io::loadPLYFile(path, cloud, origin, orientation); }) < 0) {
       error =
@@ -254,17 +408,54 @@ loadCloud(const std::string& path,
       return false;
     }
   }
+  // what PCL made of the file must hold together before anything reads the points
+  const std::string problem = layoutProblem(cloud);
+  if (!problem.empty()) {
+    error = "'" + path + "': " + (ext == ".pcd" ? "PCD" : "PLY") +
+            " data is inconsistent: " + problem;
+    return false;
+  }
   return true;
+}
+
+std::string
+fieldsList(const pcl::PCLPointCloud2& cloud)
+{
+  if (cloud.fields.empty())
+    return "none";
+  std::string list = cloud.fields[0].name;
+  for (std::size_t f = 1; f < cloud.fields.size(); ++f)
+    list += " " + cloud.fields[f].name;
+  return list;
+}
+
+std::string
+layoutProblem(const pcl::PCLPointCloud2& cloud)
+{
+  const std::size_t n = static_cast<std::size_t>(cloud.width) * cloud.height;
+  if (cloud.point_step != 0 && n > cloud.data.size() / cloud.point_step)
+    return "the data holds fewer than its " + std::to_string(n) + " points";
+  for (const auto& f : cloud.fields) {
+    const std::uint64_t size = pcl::getFieldSize(f.datatype);
+    if (size == 0)
+      return "field '" + f.name + "' has an unknown type";
+    if (std::uint64_t(f.offset) + size * f.count > cloud.point_step)
+      return "field '" + f.name + "' lies outside its point";
+  }
+  return "";
 }
 
 bool
 hasXYZ(const pcl::PCLPointCloud2& cloud, std::string& problem)
 {
+  problem = layoutProblem(cloud);
+  if (!problem.empty())
+    return false;
   for (const char* name : {"x", "y", "z"}) {
     const int index = pcl::getFieldIndex(cloud, name);
     if (index < 0) {
-      problem = std::string("no '") + name +
-                "' field (fields: " + pcl::getFieldsList(cloud) + ")";
+      problem =
+        std::string("no '") + name + "' field (fields: " + fieldsList(cloud) + ")";
       return false;
     }
     if (cloud.fields[static_cast<std::size_t>(index)].count != 1) {
@@ -296,6 +487,10 @@ readScalar(const std::uint8_t* p, std::uint8_t datatype)
     return get(std::int32_t{});
   case pcl::PCLPointField::UINT32:
     return get(std::uint32_t{});
+  case pcl::PCLPointField::INT64:
+    return get(std::int64_t{});
+  case pcl::PCLPointField::UINT64:
+    return get(std::uint64_t{});
   case pcl::PCLPointField::FLOAT32:
     return get(float{});
   case pcl::PCLPointField::FLOAT64:

@@ -27,6 +27,10 @@ namespace visfeat_tools {
 bool
 checkPcdHeader(const std::string& path, std::uintmax_t file_size, std::string& problem);
 
+/** \brief Check that `path` is a regular file that can be opened and is not empty;
+ * false + `error` (one line naming the file) when not. `size` is its size in bytes. */
+bool checkInputFile(const std::string& path, std::uintmax_t& size, std::string& error);
+
 /** \brief Load a .pcd or .ply file (extension checked case-insensitively) into a
  * PCLPointCloud2, keeping every field. On failure `error` is one line naming the file
  * and the problem. origin / orientation are the PCD viewpoint (identity for PLY). */
@@ -36,12 +40,23 @@ bool loadCloud(const std::string& path,
                Eigen::Quaternionf& orientation,
                std::string& error);
 
-/** \brief Check that a cloud has scalar numeric x, y, z fields; `problem` names the
- * first one missing or not a scalar. */
+/** \brief The names of a cloud's fields separated by spaces, "none" without fields.
+ * pcl::getFieldsList (PCL 1.13) reads before its vector's start when there are none,
+ * as a PLY file without a vertex element gives (found by fuzzing). */
+std::string fieldsList(const pcl::PCLPointCloud2& cloud);
+
+/** \brief What is inconsistent in a cloud's layout, empty when nothing is: data shorter
+ * than width x height points, a field of unknown type or outside point_step. */
+std::string layoutProblem(const pcl::PCLPointCloud2& cloud);
+
+/** \brief Check that a cloud's layout holds together (layoutProblem) and that it has
+ * scalar numeric x, y, z fields; `problem` names the first one missing or not a
+ * scalar. */
 bool hasXYZ(const pcl::PCLPointCloud2& cloud, std::string& problem);
 
 /** \brief Read one field value at `p` as a double, whatever its numeric type
- * (pcl::PCLPointField::INT8 ... FLOAT64); NaN for an unknown datatype. */
+ * (pcl::PCLPointField::INT8 ... FLOAT64, INT64 and UINT64 too); NaN for an unknown
+ * datatype. */
 double readScalar(const std::uint8_t* p, std::uint8_t datatype);
 
 /** \brief x, y, z of a PCLPointCloud2 as PointXYZ: fromPCLPointCloud2 when they are

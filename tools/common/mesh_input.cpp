@@ -4,6 +4,7 @@
 
 #include "common/arguments.h"
 #include "common/cloud_input.h"
+#include "common/obj_check.h"
 #include "common/tool_main.h"
 
 #include <visfeat/core/common/error.h>
@@ -18,6 +19,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 #include <vector>
 
@@ -48,17 +50,53 @@ isMeshFile(const std::string& path)
   return false;
 }
 
+std::string
+plyProblem(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  std::string line, element;
+  bool red = false;
+  for (int n = 1; n <= 1024 && std::getline(in, line); ++n) {
+    std::istringstream words(line);
+    std::string keyword, kind, size_type, value_type, name;
+    words >> keyword;
+    if (keyword == "end_header")
+      break;
+    if (keyword == "element") {
+      words >> element;
+      red = false;
+    }
+    if (keyword != "property" || element != "vertex" || !(words >> kind))
+      continue;
+    const std::string where = "line " + std::to_string(n) + ": ";
+    if (kind == "list") {
+      words >> size_type >> value_type >> name;
+      return where + "a list property ('" + name.substr(0, 40) +
+             "') of the vertex element (PCL's reader aborts when its length varies)";
+    }
+    words >> name;
+    red = red || name == "red";
+    // PCL packs the colour into a field it adds at 'red'; 'blue' without it moved the
+    // next property past the point (an assertion in PCL, found by fuzzing)
+    if ((name == "green" || name == "blue") && !red)
+      return where + "a '" + name +
+             "' property of the vertex element without a 'red' before it (PCL's "
+             "reader aborts on it)";
+  }
+  return "";
+}
+
 bool
 toSurfaceMesh(const pcl::PolygonMesh& in, visfeat::SurfaceMesh& out, std::string& error)
 {
-  std::string problem;
-  if (!hasXYZ(in.cloud, problem)) {
-    error = "the mesh's vertices have " + problem;
-    return false;
-  }
   const std::size_t n = static_cast<std::size_t>(in.cloud.width) * in.cloud.height;
   if (in.cloud.data.size() < n * in.cloud.point_step) {
     error = "the mesh's vertex data is truncated";
+    return false;
+  }
+  std::string problem;
+  if (!hasXYZ(in.cloud, problem)) {
+    error = "the mesh's vertices have " + problem;
     return false;
   }
   const pcl::PCLPointField* f[3];
@@ -126,6 +164,22 @@ stlProblem(const std::string& path)
   if (!(in >> word) || word != "solid")
     return "neither a binary STL (its size does not match its triangle count) nor an "
            "ASCII one (it does not start with 'solid')";
+  // VTK picks its ASCII or binary reader from the bytes (vtksys DetectFileType): a
+  // "solid" file with NUL or 8-bit bytes went to the binary reader, whose triangle
+  // count from bytes 80-83 asked for gigabytes. An ASCII STL is text throughout.
+  in.clear();
+  in.seekg(0);
+  std::uint64_t offset = 0;
+  for (std::istreambuf_iterator<char> it(in), end; it != end; ++it, ++offset) {
+    const auto c = static_cast<unsigned char>(*it);
+    if (!(c >= 0x20 && c < 0x7f) && c != '\n' && c != '\r' && c != '\t')
+      return "an ASCII STL with a byte that is not text at offset " +
+             std::to_string(offset) +
+             " (binary data, or a binary STL of the wrong size)";
+  }
+  in.clear();
+  in.seekg(0);
+  in >> word;
   std::uint64_t vertices = 0;
   bool ended = false;
   while (in >> word) {
@@ -151,6 +205,9 @@ bool
 loadMesh(const std::string& path, visfeat::SurfaceMesh& mesh, std::string& error)
 {
   const std::string ext = lowerExtension(path);
+  std::uintmax_t size = 0;
+  if (!checkInputFile(path, size, error))
+    return false;
   if (ext == ".off") {
     std::ifstream in(path, std::ios::binary);
     try {
@@ -169,13 +226,33 @@ loadMesh(const std::string& path, visfeat::SurfaceMesh& mesh, std::string& error
       error = "'" + path + "': not a valid STL mesh: " + problem;
       return false;
     }
+  } else if (ext == ".ply") {
+    const std::string problem = plyProblem(path);
+    if (!problem.empty()) {
+      error = "'" + path + "': not a valid PLY mesh: " + problem;
+      return false;
+    }
+  } else if (ext == ".obj") {
+    // PCL's OBJ reader reads past its buffers on some lines: check them first
+    const std::string problem = objProblem(path);
+    if (!problem.empty()) {
+      error = "'" + path + "': not a valid OBJ mesh: " + problem;
+      return false;
+    }
   }
-  const int rc = quietly([&] {
-    if (ext == ".stl")
-      return pcl::io::loadPolygonFileSTL(path, polygons) > 0 ? 0 : -1;
-    return ext == ".ply" ? pcl::io::loadPLYFile(path, polygons)
-                         : pcl::io::loadOBJFile(path, polygons);
-  });
+  // PCL's readers also throw (std::length_error from an OBJ line fuzzing found):
+  // that is a file they could not parse, not an error of the tool
+  int rc = -1;
+  try {
+    rc = quietly([&] {
+      if (ext == ".stl")
+        return pcl::io::loadPolygonFileSTL(path, polygons) > 0 ? 0 : -1;
+      return ext == ".ply" ? pcl::io::loadPLYFile(path, polygons)
+                           : pcl::io::loadOBJFile(path, polygons);
+    });
+  } catch (const std::exception&) {
+    rc = -1;
+  }
   const std::string format = ext == ".ply" ? "PLY" : ext == ".stl" ? "STL" : "OBJ";
   if (rc < 0) {
     error = "'" + path + "': not a valid " + format +

@@ -44,6 +44,12 @@ std::string stlProblem(const std::string& path);
  * cloud reader reports what is wrong with it. */
 bool isMeshFile(const std::string& path);
 
+/** \brief What PCL 1.13's PLY reader cannot read in the header of the .ply file at
+ * `path` (cloud or mesh), empty when nothing: a list property of the vertex element
+ * (PCL aborts on an assertion when its length varies from vertex to vertex), a 'green'
+ * or 'blue' property without a 'red' before it (an assertion too). */
+std::string plyProblem(const std::string& path);
+
 /** \brief A pcl::PolygonMesh as a visfeat::SurfaceMesh: vertex coordinates whatever
  * their numeric type, polygons fanned from their first vertex. False + `error` (without
  * the file name) for vertices without x y z, truncated vertex data, a polygon of fewer
@@ -52,9 +58,9 @@ bool toSurfaceMesh(const pcl::PolygonMesh& in,
                    visfeat::SurfaceMesh& out,
                    std::string& error);
 
-/** \brief Read a mesh file (.off by visfeat::readOff, .ply and .obj by PCL, .stl by
- * PCL's VTK reader after stlProblem()). On
- * failure `error` is one line naming the file. */
+/** \brief Read a mesh file (.off by visfeat::readOff, .ply by PCL, .obj by PCL after
+ * objProblem(), .stl by PCL's VTK reader after stlProblem()), after checkInputFile().
+ * On failure `error` is one line naming the file. */
 bool loadMesh(const std::string& path, visfeat::SurfaceMesh& mesh, std::string& error);
 
 /** \brief Load a mesh and sample it (area-weighted, seed kMeshSeed) into an x y z

@@ -228,8 +228,10 @@ readOff(std::istream& in)
     if (!parseCount(tokens[0], n) || n < 3)
       lines.fail("face " + std::to_string(f) + ": expected a vertex count >= 3, got '" +
                  tokens[0].substr(0, 20) + "'");
-    // After the indices, up to 4 colour values are allowed.
-    if (tokens.size() < n + 1 || tokens.size() > n + 5)
+    // After the indices, up to 4 colour values are allowed. (n + 1 wrapped to 0 for
+    // n = 2^64 - 1, and the indices were read past the tokens.)
+    const unsigned long long given = tokens.size() - 1;
+    if (given < n || given - n > 4)
       lines.fail("face " + std::to_string(f) + ": expected " + std::to_string(n) +
                  " vertex indices");
     polygon.clear();

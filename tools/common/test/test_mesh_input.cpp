@@ -217,7 +217,7 @@ TEST_F(MeshInput, BrokenStlFilesAreRefusedBeforeTheReader)
     {binary.substr(0, binary.size() - 7),
      "a binary STL of 277 bytes whose count says 4 triangles (284 bytes)"},
     {binary.substr(0, 84).replace(80, 4, std::string(4, '\0')), "without triangles"},
-    {"", "neither a binary STL"},
+    {"x", "neither a binary STL"},
   };
   for (const auto& [text, expected] : cases) {
     const std::string file = write("broken.stl", text);
@@ -228,6 +228,12 @@ TEST_F(MeshInput, BrokenStlFilesAreRefusedBeforeTheReader)
     EXPECT_NE(error.find(expected), std::string::npos)
       << error << " (expected: " << expected << ")";
   }
+  // an empty file is refused before the STL check, as every input
+  const std::string empty = write("empty.stl", "");
+  visfeat::SurfaceMesh mesh;
+  std::string error;
+  EXPECT_FALSE(vt::loadMesh(empty, mesh, error));
+  EXPECT_EQ(error, "'" + empty + "': file is empty");
 }
 
 TEST_F(MeshInput, SamplesAMeshIntoACloud)
