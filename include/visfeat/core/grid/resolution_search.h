@@ -4,10 +4,12 @@
 
 namespace visfeat {
 
-/** \brief The automatic resolution's search goes no finer than this: the public fandisk
- * mesh at 1024 cells took 87 s and 0.64 GiB on 2 cores (at 512: 15 s, 0.33 GiB), and
- * there its last narrow faces were resolved already at 512. */
-constexpr int kMaxSearchResolution = 1024;
+/** \brief The automatic resolution's search goes no finer than this (a resolution set
+ * with setResolution() may be finer). Measured on 2 cores shared with other work: the
+ * public fandisk mesh takes 5 s at 256 and 15-27 s at 512, where its narrow faces are
+ * resolved; the CGAL part 102 s and the CGAL pinion 1,133 s at 1024, too slow for a
+ * default. */
+constexpr int kMaxSearchResolution = 512;
 
 /** \brief Finer resolutions the search tries after the first, at most. */
 constexpr int kMaxSearchSteps = 2;
