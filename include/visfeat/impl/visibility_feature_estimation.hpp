@@ -189,6 +189,8 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::chooseResolution(
       const ResolutionEstimate density = estimateResolution(*surface_, shape.extent);
       run.resolution.spacing = density.spacing;
       run.resolution.k = density.k;
+      run.resolution.copies = density.copies;
+      run.resolution.copy_radius = density.copy_radius;
       run.resolution.queries = density.queries;
     }
     return resolution_;
@@ -297,6 +299,9 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::fillCells(
     return rasterizeTriangles(run.grid, mesh_->vertices, mesh_->triangles,
                               run.visibility.threads);
   case SurfaceFill::kLocalTriangles:
+    if (run.resolution.copies > 1) // triangles between sites, not between copies
+      return localTriangleCells(distinctSites(surface, run.resolution.copy_radius),
+                                run.grid, local_triangles_, run.visibility.threads);
     return localTriangleCells(surface, run.grid, local_triangles_,
                               run.visibility.threads);
   case SurfaceFill::kOrganized:
