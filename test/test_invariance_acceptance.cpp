@@ -9,11 +9,12 @@
 //   and counts (6 / 12 / 8), dense (about 280 cells, the band of the points) and sparse
 //   (20,000 points, filled at 256).
 // Measured on 2026-12-01 (seeds 4000-4020): survey coordinates give the reference's
-// counts on every model; the rotations do on the cube and the triangular prism (20 of
-// 20) but not yet on the tetrahedron (19: an extra face), U-prism (19), box with hole
+// counts on every model; the rotations do on the cube, the triangular prism and the
+// cylinder (20 of 20) but not yet on the tetrahedron (19: an extra face), U-prism (19),
+// box with hole
 // (18) and icosahedron (10: the extra corner of the sparse path, see README "Sparse
 // clouds"), so this test fails on those four until the method is invariant there.
-// About 12 minutes on 2 cores (one test per model, 1.5-2 minutes each): label
+// About 13 minutes on 2 busy cores (one test per model, 1.5-2.5 minutes each): label
 // acceptance.
 
 #include "band_fixtures.h"
