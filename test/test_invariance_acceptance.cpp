@@ -11,9 +11,9 @@
 // Measured on 2026-12-01 (seeds 4000-4020): survey coordinates give the reference's
 // counts on every model; the rotations do on the cube, the triangular prism and the
 // cylinder (20 of 20) but not yet on the tetrahedron (19: an extra face), U-prism (19),
-// box with hole
-// (18) and icosahedron (10: the extra corner of the sparse path, see README "Sparse
-// clouds"), so this test fails on those four until the method is invariant there.
+// box with hole (18) and icosahedron (10: the extra corner of the sparse path, see
+// README "Sparse clouds"), so this test fails on those four until the method is
+// invariant there.
 // About 13 minutes on 2 busy cores (one test per model, 1.5-2.5 minutes each): label
 // acceptance.
 
