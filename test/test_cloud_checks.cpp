@@ -203,6 +203,76 @@ TEST(ResolutionArithmetic, FromNeighbourDistances)
             "cannot estimate the point spacing: most points have 8 or more duplicates");
 }
 
+// Rows of a table: each query's distances to its neighbours, ranks 1..per_query.
+visfeat::NeighbourDistanceTable
+tableOf(const std::vector<std::vector<double>>& rows)
+{
+  visfeat::NeighbourDistanceTable table;
+  table.per_query = rows.front().size();
+  for (const auto& row : rows)
+    table.values.insert(table.values.end(), row.begin(), row.end());
+  return table;
+}
+
+TEST(ResolutionArithmetic, CopiesAreCountedAsOneSite)
+{
+  // Clean: neighbour j at sqrt(j) (a uniform density); the 2nd is the estimate.
+  std::vector<double> clean;
+  for (int j = 1; j <= 16; ++j)
+    clean.push_back(std::sqrt(double(j)));
+  const visfeat::ResolutionEstimate plain =
+    visfeat::resolutionFromNeighbourTable(tableOf({clean, clean, clean}), 2, 100.0);
+  EXPECT_EQ(plain.copies, 1);
+  EXPECT_DOUBLE_EQ(plain.spacing,
+                   visfeat::spacingFromNeighbourDistance(std::sqrt(2.0), 2));
+  EXPECT_EQ(plain.reason.find("copies"), std::string::npos) << plain.reason;
+  // The same sites, each point three times: 2 copies at 0, then each site 3 times.
+  std::vector<double> tripled{0.0, 0.0};
+  for (int j = 1; j <= 5; ++j)
+    for (int c = 0; c < 3; ++c)
+      tripled.push_back(std::sqrt(double(j)));
+  tripled.resize(16);
+  const visfeat::ResolutionEstimate three =
+    visfeat::resolutionFromNeighbourTable(tableOf({tripled, tripled, clean}), 2, 100.0);
+  EXPECT_EQ(three.copies, 3);
+  EXPECT_DOUBLE_EQ(three.spacing, plain.spacing); // the 6th point is the 2nd site
+  EXPECT_GT(three.copy_radius, 0.0);
+  EXPECT_NE(three.reason.find("; 3 copies of most points (points within "),
+            std::string::npos)
+    << three.reason;
+  EXPECT_NE(three.reason.find("the 2nd neighbour is the 6th point"), std::string::npos)
+    << three.reason;
+  // Two copies a little apart (0.05): the partner first, then each site twice.
+  std::vector<double> pairs{0.05};
+  for (int j = 1; j <= 8; ++j)
+    for (int c = 0; c < 2; ++c)
+      pairs.push_back(std::sqrt(double(j)) + 0.01 * c);
+  pairs.resize(16);
+  const visfeat::ResolutionEstimate two =
+    visfeat::resolutionFromNeighbourTable(tableOf({pairs, pairs, clean}), 2, 100.0);
+  EXPECT_EQ(two.copies, 2);
+  EXPECT_DOUBLE_EQ(two.spacing, plain.spacing);
+  // A minority with copies does not change the estimate.
+  const visfeat::ResolutionEstimate few =
+    visfeat::resolutionFromNeighbourTable(tableOf({tripled, clean, clean}), 2, 100.0);
+  EXPECT_EQ(few.copies, 1);
+
+  EXPECT_EQ(errorOf([] {
+              visfeat::resolutionFromNeighbourTable(visfeat::NeighbourDistanceTable{},
+                                                    2, 1.0);
+            }),
+            "the nearest-neighbour search found no neighbours");
+  EXPECT_EQ(
+    errorOf([&] { visfeat::resolutionFromNeighbourTable(tableOf({clean}), 17, 1.0); }),
+    "neighbour rank 17 is outside [1, 16]");
+  // more copies than the table can hold: every distance 0
+  EXPECT_EQ(errorOf([] {
+              visfeat::resolutionFromNeighbourTable(
+                tableOf({std::vector<double>(16, 0.0)}), 2, 1.0);
+            }),
+            "cannot estimate the point spacing: most points have 16 or more copies");
+}
+
 // ---------------------------------------------------------------- parameters
 
 TEST(ParameterRanges, MessagesNameParameterValueRangeAndUnit)

@@ -434,11 +434,11 @@ TEST(ResolutionEstimation, ClampedAndRefusedClouds)
     EXPECT_STREQ(error.what(), "too few finite points to estimate the point spacing");
   }
 
-  // Every point 9 times: the 8th neighbour is a copy.
+  // Every point 64 times: the 64th neighbour, the farthest looked at, is a copy.
   const Cloud base = visfeat_test::syntheticShapeCloud("cube", 85, 16);
   Cloud::Ptr copies(new Cloud);
   for (const pcl::PointXYZ& p : base.points)
-    for (int c = 0; c < 9; ++c)
+    for (int c = 0; c < 65; ++c)
       copies->push_back(p);
   Estimator est;
   est.setInputCloud(copies);
@@ -447,8 +447,50 @@ TEST(ResolutionEstimation, ClampedAndRefusedClouds)
   est.compute(out);
   EXPECT_TRUE(out.empty());
   EXPECT_EQ(est.getErrorMessage(),
-            "cannot estimate the point spacing: most points have 8 or more duplicates; "
+            "cannot estimate the point spacing: most points have 64 or more copies; "
             "set the resolution (setResolution())");
+}
+
+/** The cloud with every point `times` times, each copy moved by `shift` more. */
+Cloud
+withCopies(const Cloud& base, int times, const Eigen::Vector3f& shift)
+{
+  Cloud out;
+  for (int c = 0; c < times; ++c)
+    for (const pcl::PointXYZ& p : base.points)
+      out.push_back(
+        pcl::PointXYZ(p.x + c * shift.x(), p.y + c * shift.y(), p.z + c * shift.z()));
+  return out;
+}
+
+// Duplicates (merged or re-exported scans) and two copies a little apart (overlapping
+// registered scans) give the clean cloud's spacing, and say how many copies they saw.
+TEST(ResolutionEstimation, CopiesDoNotShrinkTheSpacing)
+{
+  for (const char* shape : {"cube", "octahedron"}) {
+    SCOPED_TRACE(shape);
+    const Cloud clean = visfeat_test::syntheticShapeCloud(shape, 87, 64);
+    const visfeat::ResolutionEstimate e = visfeat::estimateResolution(clean);
+    EXPECT_EQ(e.copies, 1);
+    EXPECT_EQ(e.reason.find("copies"), std::string::npos) << e.reason;
+    // the shift of the overlap: a tenth of the spacing, in a direction of no symmetry
+    const Eigen::Vector3f shift =
+      Eigen::Vector3f(0.6f, -0.48f, 0.64f) * static_cast<float>(0.1 * e.spacing);
+    for (const int times : {2, 3, 5}) {
+      const visfeat::ResolutionEstimate d =
+        visfeat::estimateResolution(withCopies(clean, times, Eigen::Vector3f::Zero()));
+      EXPECT_EQ(d.copies, times);
+      EXPECT_NEAR(d.resolution, e.resolution, 0.03 * e.resolution)
+        << times << " copies: " << d.reason;
+      EXPECT_NE(d.reason.find(std::to_string(times) + " copies of most points"),
+                std::string::npos)
+        << d.reason;
+    }
+    const visfeat::ResolutionEstimate o =
+      visfeat::estimateResolution(withCopies(clean, 2, shift));
+    EXPECT_EQ(o.copies, 2);
+    EXPECT_NEAR(o.resolution, e.resolution, 0.03 * e.resolution) << o.reason;
+  }
 }
 
 TEST(ResolutionEstimation, EstimatorUsesItWithResolutionZero)

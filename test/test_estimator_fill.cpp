@@ -6,6 +6,7 @@
 #include <support/evaluation.h>
 #include <visfeat/core/common/error.h>
 #include <visfeat/point_types.h>
+#include <visfeat/surface_fill.h>
 #include <visfeat/visibility_feature_estimation.h>
 
 #include <gtest/gtest.h>
@@ -16,6 +17,7 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <random>
 #include <string>
 
 namespace {
@@ -271,6 +273,29 @@ TEST(EstimatorFill, AnOrganizedViewOfTheCubeGivesItsCorner)
     EXPECT_TRUE(est.getWarnings().empty()) << est.getWarnings().front();
     EXPECT_EQ(out.size(), image.points.size()) << "one output point per pixel";
   }
+}
+
+// The fill between copies: one point per cluster within the radius, the same whatever
+// the order of the points.
+TEST(DistinctSites, OnePointPerClusterOfCopiesInAnyOrder)
+{
+  pcl::PointCloud<pcl::PointXYZ> cloud;
+  for (int i = 0; i < 10; ++i)
+    for (int j = 0; j < 10; ++j)
+      for (int c = 0; c < 3; ++c) // three copies, the third 0.01 away
+        cloud.push_back(pcl::PointXYZ(float(i), float(j), c == 2 ? 0.01f : 0.f));
+  cloud.push_back(pcl::PointXYZ(NAN, 0.f, 0.f));
+  const auto sites = visfeat::distinctSites(cloud, 0.1);
+  EXPECT_EQ(sites.size(), 100u);
+  const auto exact = visfeat::distinctSites(cloud, 0.0); // exact duplicates only
+  EXPECT_EQ(exact.size(), 200u);
+  std::mt19937_64 rng(7);
+  pcl::PointCloud<pcl::PointXYZ> shuffled = cloud;
+  std::shuffle(shuffled.begin(), shuffled.end(), rng);
+  const auto again = visfeat::distinctSites(shuffled, 0.1);
+  ASSERT_EQ(again.size(), sites.size());
+  for (std::size_t i = 0; i < sites.size(); ++i)
+    EXPECT_EQ(again[i].getVector3fMap(), sites[i].getVector3fMap()) << i;
 }
 
 } // namespace

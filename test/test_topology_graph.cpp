@@ -734,6 +734,15 @@ TEST(TopologyGraph, JsonParsesAndHoldsTheGraph)
   EXPECT_TRUE(k.at("grid").at("cell_size").is_null());
   EXPECT_EQ(k.at("source"), "");
   EXPECT_TRUE(k.at("parameters").is_object() && k.at("parameters").empty());
+  EXPECT_EQ(k.at("offset"), Json::array({0.0, 0.0, 0.0}));
+
+  // A recentred cloud: every coordinate in the input's frame, the offset stated.
+  meta.offset = Eigen::Vector3d(512350.0, 4312350.0, 120.0);
+  const Json survey = parseJson(jsonOf(g, meta));
+  EXPECT_EQ(survey.at("offset"), Json::array({512350.0, 4312350.0, 120.0}));
+  EXPECT_EQ(survey.at("grid").at("origin")[1], 4312350.0 + s.grid.origin.y());
+  EXPECT_EQ(survey.at("nodes")[0].at("centroid")[0], 512350.0 + g.node(1).centroid.x());
+  EXPECT_EQ(survey.at("nodes")[0].at("max")[2], 120.0 + g.node(1).max.z());
 }
 
 TEST(TopologyGraph, WriteFileByExtension)

@@ -167,6 +167,8 @@ struct Input
   Eigen::Quaternionf orientation = Eigen::Quaternionf::Identity();
   std::shared_ptr<pcl::PointCloud<pcl::PointXYZ>> xyz;
   std::shared_ptr<const visfeat::SurfaceMesh> mesh; // mesh input: its triangles
+  /** \brief Subtracted from x y z before the cast to float (vt::recentringOffset). */
+  Eigen::Vector3d offset = Eigen::Vector3d::Zero();
 };
 
 /** \brief Load the input cloud, or sample the input mesh, printing what was loaded. */
@@ -218,9 +220,20 @@ prepareXYZ(vt::Options& opt, bool user_resolution, Input& in, std::string& error
     return false;
   }
   in.xyz = std::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
-  vt::toXYZ(in.cloud, *in.xyz);
+  // far from the origin (survey coordinates): recentred in double, then cast to float
+  in.offset = in.mesh ? Eigen::Vector3d::Zero() : vt::recentringOffset(in.cloud);
+  vt::toXYZ(in.cloud, *in.xyz, in.offset);
+  if (!in.offset.isZero()) {
+    print_info("Recentred: the computation runs on x y z minus (");
+    print_value("%.17g %.17g %.17g", in.offset.x(), in.offset.y(), in.offset.z());
+    print_info("); the output keeps the input's coordinates, the graph JSON's are "
+               "the input's and give this \"offset\"\n");
+  }
   // the sensor pose: the grid fill of an organized cloud casts its rays from it
-  in.xyz->sensor_origin_ = in.origin;
+  in.xyz->sensor_origin_ =
+    in.origin - Eigen::Vector4f(static_cast<float>(in.offset.x()),
+                                static_cast<float>(in.offset.y()),
+                                static_cast<float>(in.offset.z()), 0.f);
   in.xyz->sensor_orientation_ = in.orientation;
   return vt::checkShapeAndResolution(opt.input, *in.xyz, user_resolution,
                                      opt.resolution, error);
@@ -436,8 +449,9 @@ run(int argc, char** argv)
   // complete, so a failure leaves none.
   pcl::PCLPointCloud2 merged;
   if (!vt::mergeFields(in.cloud, result, merged, error) ||
-      !vt::writeClouds(opt, merged, in.origin, in.orientation, estimator, error) ||
-      (!opt.graph.empty() && !vt::writeGraph(opt, estimator, error)) ||
+      !vt::writeClouds(opt, merged, in.origin, in.orientation, estimator, in.offset,
+                       error) ||
+      (!opt.graph.empty() && !vt::writeGraph(opt, estimator, in.offset, error)) ||
       !vt::writePicturesAndCommit(opt, estimator, result, error))
     return fail(error);
   return 0;

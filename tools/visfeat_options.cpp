@@ -60,8 +60,9 @@ switchOptions()
 void
 printHelp(const char* program)
 {
-  print_error("Syntax is: %s input.{pcd,ply,obj,off,stl} output.pcd <options>\n",
-              program);
+  print_error(
+    "Syntax is: %s input.{pcd,ply,xyz,txt,obj,off,stl} output.pcd <options>\n",
+    program);
   print_info(
     "  Labels every point with the visibility radius of its voxel-band cell (Chica et "
     "al.,\n"
@@ -69,7 +70,10 @@ printHelp(const char* program)
     "holds\n"
     "  every field of the input plus visibility_radius (float), label (uint32) and\n"
     "  feature_class (uint8: 0 none, 1 vertex, 2 edge, 3 face); an existing field of\n"
-    "  one of these names is overwritten. label is the region id (0 = none).\n");
+    "  one of these names is overwritten. label is the region id (0 = none).\n"
+    "  Text clouds (.xyz, .txt: x y z per line) are read in double; a cloud far from\n"
+    "  the origin (survey coordinates) is recentred in double before the computation,\n"
+    "  which is in float; the output keeps the input's coordinates.\n");
   print_info(
     "  A mesh (.obj, .off, .stl, or .ply with faces) gives the band directly: its\n"
     "  triangles are rasterised into the cells (-fill mesh, the default for meshes); "
@@ -301,7 +305,8 @@ bool
 readOptions(const Arguments& args, Options& opt, std::string& error)
 {
   if (args.positional().size() != 2) {
-    error = "expected an input (.pcd, .ply, .obj or .off) and an output (.pcd), got " +
+    error = "expected an input (.pcd, .ply, .xyz, .txt, .obj, .off or .stl) and an "
+            "output (.pcd), got " +
             std::to_string(args.positional().size()) + " file argument(s) (see -h)";
     return false;
   }

@@ -14,6 +14,7 @@
 #include <pcl/conversions.h>
 #include <pcl/io/pcd_io.h>
 
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <vector>
@@ -80,13 +81,48 @@ voxelCloud(const visfeat::VoxelBand& band,
   return cells;
 }
 
+/** \brief `cells` (the -voxels cloud) with x y z replaced by FLOAT64 ones: the cell
+ * centres plus `offset`, in the input's frame. */
+pcl::PCLPointCloud2
+withDoubleXYZ(const pcl::PCLPointCloud2& cells,
+              const visfeat::VoxelBand& band,
+              const Eigen::Vector3d& offset)
+{
+  pcl::PCLPointCloud2 xyz;
+  xyz.width = cells.width;
+  xyz.height = cells.height;
+  xyz.is_dense = true;
+  for (const char* name : {"x", "y", "z"}) {
+    pcl::PCLPointField field;
+    field.name = name;
+    field.offset = static_cast<std::uint32_t>(8 * xyz.fields.size());
+    field.datatype = pcl::PCLPointField::FLOAT64;
+    field.count = 1;
+    xyz.fields.push_back(field);
+  }
+  xyz.point_step = 24;
+  xyz.row_step = xyz.point_step * xyz.width;
+  xyz.data.resize(band.size() * 24);
+  for (std::size_t id = 0; id < band.size(); ++id) {
+    const Eigen::Vector3d centre =
+      band.grid().cellCenter(band.coord(static_cast<visfeat::CellId>(id))) + offset;
+    std::memcpy(xyz.data.data() + 24 * id, centre.data(), 24);
+  }
+  pcl::PCLPointCloud2 merged;
+  pcl::concatenateFields(withoutFields(cells, {"x", "y", "z"}), xyz, merged);
+  return merged;
+}
+
 /** \brief The grid and every parameter, written with a JSON graph. */
 visfeat::GraphMetadata
-graphMetadata(const Estimator& estimator, const Options& opt)
+graphMetadata(const Estimator& estimator,
+              const Options& opt,
+              const Eigen::Vector3d& offset)
 {
   const visfeat::TopologyGraph& graph = estimator.getTopologyGraph();
   visfeat::GraphMetadata meta;
   meta.grid = estimator.getGrid();
+  meta.offset = offset;
   meta.source = opt.input;
   const auto& sp = estimator.getSegmentationParameters();
   meta.warnings = estimator.getWarnings();
@@ -94,6 +130,7 @@ graphMetadata(const Estimator& estimator, const Options& opt)
   meta.parameters = {
     {"resolution", std::to_string(estimator.getResolutionEstimate().resolution)},
     {"resolution_reason", estimator.getResolutionEstimate().reason},
+    {"copies", std::to_string(estimator.getResolutionEstimate().copies)},
     {"fill", visfeat::surfaceFillName(estimator.getSurfaceFillUsed())},
     {"fill_reason", estimator.getSurfaceFillReason()},
     {"min_radius", std::to_string(sp.components.min_radius)},
@@ -157,6 +194,7 @@ writeClouds(const Options& opt,
             const Eigen::Vector4f& origin,
             const Eigen::Quaternionf& orientation,
             const Estimator& estimator,
+            const Eigen::Vector3d& offset,
             std::string& error)
 {
   TicToc tt;
@@ -184,6 +222,8 @@ writeClouds(const Options& opt,
                estimator.getSegmentation());
   pcl::PCLPointCloud2 cells2;
   pcl::toPCLPointCloud2(cells, cells2);
+  if (!offset.isZero())
+    cells2 = withDoubleXYZ(cells2, estimator.getVoxelBand(), offset);
   if (!writeTemporary(opt.voxels, cells2, Eigen::Vector4f::Zero(),
                       Eigen::Quaternionf::Identity(), error)) {
     discardOutput(opt.output);
@@ -199,12 +239,15 @@ writeClouds(const Options& opt,
 }
 
 bool
-writeGraph(const Options& opt, const Estimator& estimator, std::string& error)
+writeGraph(const Options& opt,
+           const Estimator& estimator,
+           const Eigen::Vector3d& offset,
+           std::string& error)
 {
   const visfeat::TopologyGraph& graph = estimator.getTopologyGraph();
   print_highlight("Saving ");
   print_value("%s ", opt.graph.c_str());
-  const visfeat::GraphMetadata meta = graphMetadata(estimator, opt);
+  const visfeat::GraphMetadata meta = graphMetadata(estimator, opt, offset);
   std::ofstream file(temporaryPath(opt.graph));
   const std::string ext = lowerExtension(opt.graph);
   if (ext == ".json")

@@ -32,17 +32,24 @@ bool mergeFields(const pcl::PCLPointCloud2& cloud,
 
 /** \brief Write the output cloud `merged` (with the input's viewpoint) and the
  * -voxels cloud, if requested, as binary compressed PCD under their temporary names,
- * printing a "Saving" line for each. */
+ * printing a "Saving" line for each. `offset` is what was subtracted from the input's
+ * coordinates (recentringOffset()): when it is not zero the cell centres are written
+ * as double x y z with it added back, in the input's frame. */
 bool writeClouds(const Options& opt,
                  const pcl::PCLPointCloud2& merged,
                  const Eigen::Vector4f& origin,
                  const Eigen::Quaternionf& orientation,
                  const Estimator& estimator,
+                 const Eigen::Vector3d& offset,
                  std::string& error);
 
-/** \brief Write the -graph file under its temporary name (DOT, or JSON with the grid
- * and every parameter); on failure the clouds' temporary files are removed too. */
-bool writeGraph(const Options& opt, const Estimator& estimator, std::string& error);
+/** \brief Write the -graph file under its temporary name (DOT, or JSON with the grid,
+ * every parameter and the `offset`, coordinates in the input's frame); on failure the
+ * clouds' temporary files are removed too. */
+bool writeGraph(const Options& opt,
+                const Estimator& estimator,
+                const Eigen::Vector3d& offset,
+                std::string& error);
 
 /** \brief Render the pictures, then move every output into place; on any failure no
  * output (finished or temporary) is left. */

@@ -20,15 +20,22 @@ CloudShape cloudShapeOf(const pcl::PointCloud<PointT>& cloud);
  * spacing by spacingFromNeighbourDistance(); the resolution is extent / (2 spacing),
  * rounded and clamped to [GridSpec::kMinResolution, GridSpec::kMaxResolution], where
  * extent is the longest side of the bounding box of the finite points. A cloud sampled
- * at half a cell of resolution N comes back at about N. Duplicate points fool it (a
- * point with 8 copies has neighbour distance 0): the median ignores a few.
+ * at half a cell of resolution N comes back at about N.
  *
- * Cost: a k-d tree of the finite points and 10,000 queries (~0.1-0.5 s for 10^6
- * points); memory: a copy of the finite points (16 bytes each) and the tree.
- * \return the resolution with the spacing, k, queries, extent, whether it was clamped
- *         and a one-line reason (ResolutionEstimate).
- * \throws visfeat::Error with fewer than 2 finite points, or when most points have k
- *         or more duplicates. */
+ * Copies do not fool it: duplicate points (merged or re-exported scans) and copies a
+ * little apart (overlapping registered scans, closer than kCopyRadiusSpacings of the
+ * apparent spacing) are recognised from up to 8 x kMaxCopies neighbours of each
+ * queried point, and the spacing is that of the sites of the surface, not of the
+ * points (resolutionFromNeighbourTable(); ResolutionEstimate::copies says how many
+ * copies most points have, and the reason says it too).
+ *
+ * Cost: a k-d tree of the finite points and 10,000 queries of 64 neighbours (~0.2-0.6 s
+ * for 10^6 points); memory: a copy of the finite points (16 bytes each), the tree and
+ * 5 MB of distances.
+ * \return the resolution with the spacing, k, copies, queries, extent, whether it was
+ *         clamped and a one-line reason (ResolutionEstimate).
+ * \throws visfeat::Error with fewer than 2 finite points, or when most points have
+ *         64 (kSpacingNeighbour x kMaxCopies) or more copies. */
 template <typename PointT>
 ResolutionEstimate estimateResolution(const pcl::PointCloud<PointT>& cloud);
 

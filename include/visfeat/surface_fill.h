@@ -87,6 +87,20 @@ constexpr double kMinLargestPieceShare = 0.1;
  * repair (a band full of holes): 0.13 on the dense generated models. */
 constexpr double kMaxRepairShare = 0.3;
 
+/** \brief One point of every cluster of copies: the finite points with those closer
+ * than `radius` (world units) to a kept point removed.
+ *
+ * Duplicate points and overlapping copies of a scan (ResolutionEstimate::copies > 1)
+ * would give the umbrella triangles of localTriangleCells() neighbours at distance 0
+ * and degenerate triangles; the fill is made between the sites instead. Points are
+ * visited in lexicographic (x, y, z) order, so the result does not depend on the order
+ * of the input (copies at one position are interchangeable). radius <= 0 keeps the
+ * finite points, without exact duplicates. Cost: a sort and one radius search per kept
+ * point. */
+template <typename PointT>
+pcl::PointCloud<PointT> distinctSites(const pcl::PointCloud<PointT>& cloud,
+                                      double radius);
+
 /** \brief The cells of the umbrella triangles of a cloud's finite points
  * (umbrellaTriangles() with neighbours from pcl::search::KdTree), rasterised on grid.
  * \param[out] triangles if not null, the number of triangles made

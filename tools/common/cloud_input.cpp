@@ -4,6 +4,7 @@
 
 #include "common/arguments.h"
 #include "common/mesh_input.h"
+#include "common/text_cloud_input.h"
 #include "common/tool_main.h"
 
 #include <pcl/common/io.h>
@@ -288,6 +289,30 @@ checkAfterData(std::istream& in, int line_number, std::string& problem)
   return true;
 }
 
+/** \brief visit(p) for every point of `in` whose x, y, z (any numeric type) are all
+ * finite, in double precision. */
+template <typename Visit>
+void
+forEachXYZ(const pcl::PCLPointCloud2& in, Visit visit)
+{
+  const int ix = pcl::getFieldIndex(in, "x"), iy = pcl::getFieldIndex(in, "y"),
+            iz = pcl::getFieldIndex(in, "z");
+  if (ix < 0 || iy < 0 || iz < 0)
+    return;
+  const pcl::PCLPointField& fx = in.fields[static_cast<std::size_t>(ix)];
+  const pcl::PCLPointField& fy = in.fields[static_cast<std::size_t>(iy)];
+  const pcl::PCLPointField& fz = in.fields[static_cast<std::size_t>(iz)];
+  const std::size_t n = static_cast<std::size_t>(in.width) * in.height;
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::uint8_t* base = in.data.data() + i * in.point_step;
+    const Eigen::Vector3d p(readScalar(base + fx.offset, fx.datatype),
+                            readScalar(base + fy.offset, fy.datatype),
+                            readScalar(base + fz.offset, fz.datatype));
+    if (p.allFinite())
+      visit(p);
+  }
+}
+
 } // namespace
 
 bool
@@ -376,9 +401,9 @@ loadCloud(const std::string& path,
   origin = Eigen::Vector4f::Zero();
   orientation = Eigen::Quaternionf::Identity();
   const std::string ext = lowerExtension(path);
-  if (ext != ".pcd" && ext != ".ply") {
+  if (ext != ".pcd" && ext != ".ply" && !isTextCloudFile(path)) {
     error = "'" + path + "': unknown extension '" + ext +
-            "' (expected .pcd, .ply, .obj, .off or .stl)";
+            "' (expected .pcd, .ply, .xyz, .txt, .obj, .off or .stl)";
     return false;
   }
   std::uintmax_t size = 0;
@@ -393,6 +418,13 @@ loadCloud(const std::string& path,
     if (quietly(
           [&] { return pcl::io::loadPCDFile(path, cloud, origin, orientation); }) < 0) {
       error = "'" + path + "': PCD data is truncated or corrupt";
+      return false;
+    }
+  } else if (isTextCloudFile(path)) {
+    std::ifstream in(path, std::ios::binary);
+    std::string problem;
+    if (!readTextCloud(in, cloud, problem)) {
+      error = "'" + path + "': not a valid text cloud: " + problem;
       return false;
     }
   } else {
@@ -500,8 +532,32 @@ readScalar(const std::uint8_t* p, std::uint8_t datatype)
   }
 }
 
+Eigen::Vector3d
+recentringOffset(const pcl::PCLPointCloud2& in)
+{
+  Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::max());
+  Eigen::Vector3d hi = -lo;
+  forEachXYZ(in, [&](const Eigen::Vector3d& p) {
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  });
+  if (!(lo.array() <= hi.array()).all())
+    return Eigen::Vector3d::Zero(); // no finite point
+  const double extent = (hi - lo).maxCoeff();
+  const double farthest = lo.cwiseAbs().cwiseMax(hi.cwiseAbs()).maxCoeff();
+  if (!(farthest > kRecentreExtents * extent))
+    return Eigen::Vector3d::Zero();
+  // a round number: the centre to a multiple of the power of ten >= the extent
+  const double unit =
+    extent > 0.0 ? std::pow(10.0, std::ceil(std::log10(extent))) : 1.0;
+  const Eigen::Vector3d centre = 0.5 * (lo + hi);
+  return (centre / unit).array().round().matrix() * unit;
+}
+
 void
-toXYZ(const pcl::PCLPointCloud2& in, pcl::PointCloud<pcl::PointXYZ>& out)
+toXYZ(const pcl::PCLPointCloud2& in,
+      pcl::PointCloud<pcl::PointXYZ>& out,
+      const Eigen::Vector3d& offset)
 {
   const pcl::PCLPointField& fx =
     in.fields[static_cast<std::size_t>(pcl::getFieldIndex(in, "x"))];
@@ -509,7 +565,7 @@ toXYZ(const pcl::PCLPointCloud2& in, pcl::PointCloud<pcl::PointXYZ>& out)
     in.fields[static_cast<std::size_t>(pcl::getFieldIndex(in, "y"))];
   const pcl::PCLPointField& fz =
     in.fields[static_cast<std::size_t>(pcl::getFieldIndex(in, "z"))];
-  if (fx.datatype == pcl::PCLPointField::FLOAT32 &&
+  if (offset.isZero() && fx.datatype == pcl::PCLPointField::FLOAT32 &&
       fy.datatype == pcl::PCLPointField::FLOAT32 &&
       fz.datatype == pcl::PCLPointField::FLOAT32) {
     pcl::fromPCLPointCloud2(in, out);
@@ -523,9 +579,10 @@ toXYZ(const pcl::PCLPointCloud2& in, pcl::PointCloud<pcl::PointXYZ>& out)
   for (std::size_t i = 0; i < n; ++i) {
     const std::uint8_t* base = in.data.data() + i * in.point_step;
     pcl::PointXYZ& p = out[i];
-    p.x = static_cast<float>(readScalar(base + fx.offset, fx.datatype));
-    p.y = static_cast<float>(readScalar(base + fy.offset, fy.datatype));
-    p.z = static_cast<float>(readScalar(base + fz.offset, fz.datatype));
+    // the offset goes in double precision, before the cast to float
+    p.x = static_cast<float>(readScalar(base + fx.offset, fx.datatype) - offset.x());
+    p.y = static_cast<float>(readScalar(base + fy.offset, fy.datatype) - offset.y());
+    p.z = static_cast<float>(readScalar(base + fz.offset, fz.datatype) - offset.z());
     if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
       out.is_dense = false;
   }

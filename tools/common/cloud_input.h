@@ -31,9 +31,11 @@ checkPcdHeader(const std::string& path, std::uintmax_t file_size, std::string& p
  * false + `error` (one line naming the file) when not. `size` is its size in bytes. */
 bool checkInputFile(const std::string& path, std::uintmax_t& size, std::string& error);
 
-/** \brief Load a .pcd or .ply file (extension checked case-insensitively) into a
- * PCLPointCloud2, keeping every field. On failure `error` is one line naming the file
- * and the problem. origin / orientation are the PCD viewpoint (identity for PLY). */
+/** \brief Load a .pcd, .ply, .xyz or .txt file (extension checked case-insensitively)
+ * into a PCLPointCloud2, keeping every field in its own type (double x y z stay
+ * double; text clouds are read as double, see readTextCloud()). On failure `error` is
+ * one line naming the file and the problem. origin / orientation are the PCD viewpoint
+ * (identity for the other formats). */
 bool loadCloud(const std::string& path,
                pcl::PCLPointCloud2& cloud,
                Eigen::Vector4f& origin,
@@ -59,10 +61,27 @@ bool hasXYZ(const pcl::PCLPointCloud2& cloud, std::string& problem);
  * datatype. */
 double readScalar(const std::uint8_t* p, std::uint8_t datatype);
 
-/** \brief x, y, z of a PCLPointCloud2 as PointXYZ: fromPCLPointCloud2 when they are
- * float (the usual case), else converted from whatever numeric type they have (PLY
- * files often store double). Call hasXYZ() first. */
-void toXYZ(const pcl::PCLPointCloud2& in, pcl::PointCloud<pcl::PointXYZ>& out);
+/** \brief Coordinates farther from the origin than this many extents (the longest
+ * side of the bounding box) are recentred before they are cast to float: a float
+ * there resolves 2^-19 extents (1/60 of a cell at 8192 cells). */
+constexpr double kRecentreExtents = 16.0;
+
+/** \brief What to subtract from x, y, z (world units) before they are cast to float:
+ * zero for a cloud within kRecentreExtents extents of the origin (nothing changes);
+ * otherwise the centre of the bounding box of the finite points, computed in double
+ * and rounded to a multiple of the power of ten at least the extent (a part 10 m
+ * across near (512345, 4312345, 120) gets (512350, 4312350, 120)), so the recentred
+ * coordinates lie within about 6 extents of the origin. Zero when no point is finite.
+ * Call hasXYZ() first. */
+Eigen::Vector3d recentringOffset(const pcl::PCLPointCloud2& in);
+
+/** \brief x, y, z of a PCLPointCloud2 minus `offset`, as PointXYZ: the subtraction in
+ * double precision, then the cast to float. fromPCLPointCloud2 when they are float and
+ * the offset is zero (the usual case), else converted from whatever numeric type they
+ * have (PLY files and text clouds often store double). Call hasXYZ() first. */
+void toXYZ(const pcl::PCLPointCloud2& in,
+           pcl::PointCloud<pcl::PointXYZ>& out,
+           const Eigen::Vector3d& offset = Eigen::Vector3d::Zero());
 
 /** \brief A copy of `in` without the named fields, the others packed in offset order
  * (padding fields "_" dropped too). Returns `in` unchanged when none is present. */

@@ -53,20 +53,28 @@ estimateResolution(const pcl::PointCloud<PointT>& cloud, double extent)
   if (n < 2)
     throw Error("too few finite points to estimate the point spacing");
   const int k = static_cast<int>(std::min<std::size_t>(kSpacingNeighbour, n - 1));
+  // k sites of up to kMaxCopies points each: copies are recognised, not counted
+  const std::size_t per_query = std::min<std::size_t>(
+    static_cast<std::size_t>(k) * static_cast<std::size_t>(kMaxCopies), n - 1);
   pcl::KdTreeFLANN<pcl::PointXYZ> tree;
   tree.setInputCloud(finite);
   const std::size_t stride = std::max<std::size_t>(1, n / kSpacingQueries);
-  std::vector<double> distances;
-  distances.reserve(std::min(n, kSpacingQueries));
+  NeighbourDistanceTable table;
+  table.per_query = per_query;
+  table.values.reserve(std::min(n, kSpacingQueries) * per_query);
   pcl::Indices indices;
   std::vector<float> sqr_distances;
-  for (std::size_t i = 0; i < n && distances.size() < kSpacingQueries; i += stride) {
-    // k + 1: the query point itself comes back too.
-    if (tree.nearestKSearch((*finite)[i], k + 1, indices, sqr_distances) <= 0)
+  for (std::size_t i = 0, rows = 0; i < n && rows < kSpacingQueries; i += stride) {
+    // per_query + 1: the query point itself comes back too (first, at distance 0).
+    const int found = tree.nearestKSearch((*finite)[i], static_cast<int>(per_query + 1),
+                                          indices, sqr_distances);
+    if (found != static_cast<int>(per_query + 1))
       continue;
-    distances.push_back(std::sqrt(static_cast<double>(sqr_distances.back())));
+    for (std::size_t r = 1; r <= per_query; ++r)
+      table.values.push_back(std::sqrt(static_cast<double>(sqr_distances[r])));
+    ++rows;
   }
-  return resolutionFromNeighbourDistances(std::move(distances), k, extent);
+  return resolutionFromNeighbourTable(table, k, extent);
 }
 
 } // namespace visfeat

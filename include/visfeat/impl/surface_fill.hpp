@@ -13,8 +13,44 @@
 #include <limits>
 #include <memory>
 #include <string>
+#include <tuple>
 
 namespace visfeat {
+
+template <typename PointT>
+pcl::PointCloud<PointT>
+distinctSites(const pcl::PointCloud<PointT>& cloud, double radius)
+{
+  auto finite = std::make_shared<pcl::PointCloud<PointT>>();
+  finite->reserve(cloud.size());
+  for (const PointT& p : cloud.points)
+    if (pcl::isXYZFinite(p))
+      finite->push_back(p);
+  const auto less = [](const PointT& a, const PointT& b) {
+    return std::tie(a.x, a.y, a.z) < std::tie(b.x, b.y, b.z);
+  };
+  std::stable_sort(finite->begin(), finite->end(), less);
+  pcl::PointCloud<PointT> sites;
+  if (finite->empty())
+    return sites;
+  std::vector<char> removed(finite->size(), 0);
+  pcl::search::KdTree<PointT> tree(false);
+  tree.setInputCloud(finite);
+  pcl::Indices found;
+  std::vector<float> distances;
+  for (std::size_t i = 0; i < finite->size(); ++i) {
+    if (removed[i] || (i > 0 && !less((*finite)[i - 1], (*finite)[i])))
+      continue; // a copy of a kept or removed point
+    sites.push_back((*finite)[i]);
+    if (radius > 0.0 && tree.radiusSearch((*finite)[i], radius, found, distances) > 0)
+      for (const auto j : found)
+        removed[static_cast<std::size_t>(j)] = 1;
+  }
+  sites.width = static_cast<std::uint32_t>(sites.size());
+  sites.height = 1;
+  sites.is_dense = true;
+  return sites;
+}
 
 template <typename PointT>
 std::vector<CellCoord>
@@ -174,6 +210,8 @@ pointsOnCells(const pcl::PointCloud<PointT>& cloud,
 } // namespace visfeat
 
 #define PCL_INSTANTIATE_VisfeatSurfaceFill(T)                                          \
+  template pcl::PointCloud<T> visfeat::distinctSites<T>(const pcl::PointCloud<T>&,     \
+                                                        double);                       \
   template std::vector<visfeat::CellCoord> visfeat::localTriangleCells<T>(             \
     const pcl::PointCloud<T>&, const visfeat::GridSpec&,                               \
     const visfeat::LocalTriangleParameters&, int, std::size_t*);                       \

@@ -156,6 +156,9 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::fillCells(
     return rasterizeTriangles(run.grid, mesh_->vertices, mesh_->triangles,
                               run.visibility.threads);
   case SurfaceFill::kLocalTriangles:
+    if (run.resolution.copies > 1) // triangles between sites, not between copies
+      return localTriangleCells(distinctSites(surface, run.resolution.copy_radius),
+                                run.grid, local_triangles_, run.visibility.threads);
     return localTriangleCells(surface, run.grid, local_triangles_,
                               run.visibility.threads);
   case SurfaceFill::kOrganized:

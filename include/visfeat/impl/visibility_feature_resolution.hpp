@@ -64,6 +64,8 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::chooseResolution(
       const ResolutionEstimate density = estimateResolution(*surface_, shape.extent);
       run.resolution.spacing = density.spacing;
       run.resolution.k = density.k;
+      run.resolution.copies = density.copies;
+      run.resolution.copy_radius = density.copy_radius;
       run.resolution.queries = density.queries;
     }
     return resolution_;

@@ -536,15 +536,15 @@ TopologyGraph::writeJson(std::ostream& out, const GraphMetadata& meta) const
                      {"class", className(n.feature_class)},
                      {"cells", n.cells},
                      {"points", n.points},
-                     {"centroid", json_document::vector3(n.centroid)},
-                     {"min", json_document::vector3(n.min)},
-                     {"max", json_document::vector3(n.max)}});
+                     {"centroid", json_document::vector3(n.centroid + meta.offset)},
+                     {"min", json_document::vector3(n.min + meta.offset)},
+                     {"max", json_document::vector3(n.max + meta.offset)}});
   }
   json all_arcs = json::array();
   for (const auto& [a, b] : arcs())
     all_arcs.push_back({a, b});
   const json grid = {
-    {"origin", json_document::vector3(meta.grid.origin)},
+    {"origin", json_document::vector3(meta.grid.origin + meta.offset)},
     {"cell_size", meta.grid.cell_size},
     {"dims", {meta.grid.dims.x(), meta.grid.dims.y(), meta.grid.dims.z()}}};
   const json counts = {{"vertices", classCount(FeatureClass::kVertex)},
@@ -555,6 +555,7 @@ TopologyGraph::writeJson(std::ostream& out, const GraphMetadata& meta) const
   document["format"] = "visfeat-topology-graph";
   document["version"] = 1;
   document["source"] = meta.source;
+  document["offset"] = json_document::vector3(meta.offset);
   document["grid"] = grid;
   document["parameters"] = parameters;
   document["warnings"] = meta.warnings;

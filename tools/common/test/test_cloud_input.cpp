@@ -177,10 +177,14 @@ TEST_F(CloudInput, LoadErrorsNameTheFileAndTheProblem)
     EXPECT_FALSE(vt::loadCloud(p, cloud, origin, orientation, error)) << p;
     return error;
   };
-  const std::string xyz = write("c.xyz", "1 2 3\n");
+  const std::string las = write("c.las", "1 2 3\n");
+  EXPECT_EQ(errorOf(las), "'" + las +
+                            "': unknown extension '.las' (expected .pcd, .ply, .xyz, "
+                            ".txt, .obj, .off or .stl)");
+  const std::string xyz = write("c.xyz", "1 2 3\n4 5\n");
   EXPECT_EQ(errorOf(xyz),
             "'" + xyz +
-              "': unknown extension '.xyz' (expected .pcd, .ply, .obj, .off or .stl)");
+              "': not a valid text cloud: line 2 has 2 columns, line 1 has 3");
   EXPECT_EQ(errorOf(path("none.pcd")), "'" + path("none.pcd") + "': no such file");
   fs::create_directory(path("dir.pcd"));
   EXPECT_EQ(errorOf(path("dir.pcd")), "'" + path("dir.pcd") + "': is a directory");
@@ -290,6 +294,47 @@ TEST(ToXYZ, ConvertsDoubleCoordinatesAndMarksNaN)
   EXPECT_EQ(xyz[0].getVector3fMap(), Eigen::Vector3f(1.25f, -2.5f, 7.f));
   EXPECT_TRUE(std::isnan(xyz[1].x));
   EXPECT_FALSE(xyz.is_dense);
+}
+
+// Survey coordinates: the offset is subtracted in double before the cast to float.
+TEST(Recentring, FarCloudsAreMovedByARoundOffsetBeforeTheCastToFloat)
+{
+  using F = pcl::PCLPointField;
+  const std::vector<pcl::PCLPointField> fields{
+    field("x", 0, F::FLOAT64), field("y", 8, F::FLOAT64), field("z", 16, F::FLOAT64)};
+  // a part 10 m across near (512345, 4312345, 120), millimetre digits
+  pcl::PCLPointCloud2 c = makeCloud(fields, 24, 3);
+  const double points[3][3] = {{512341.501, 4312341.252, 115.503},
+                               {512350.499, 4312350.748, 124.497},
+                               {512345.123, 4312345.456, 120.789}};
+  for (std::size_t i = 0; i < 3; ++i)
+    for (std::uint32_t a = 0; a < 3; ++a)
+      put(c, i, 8 * a, points[i][a]);
+  const Eigen::Vector3d offset = vt::recentringOffset(c);
+  EXPECT_EQ(offset, Eigen::Vector3d(512350.0, 4312350.0, 120.0));
+  pcl::PointCloud<pcl::PointXYZ> xyz;
+  vt::toXYZ(c, xyz, offset);
+  for (std::size_t i = 0; i < 3; ++i)
+    for (int a = 0; a < 3; ++a)
+      EXPECT_NEAR(double(xyz[i].data[a]) + offset[a], points[i][a], 1e-5)
+        << "point " << i << " axis " << a;
+  // without the offset the float cast loses the millimetres (0.5 m steps at 4e6)
+  pcl::PointCloud<pcl::PointXYZ> lossy;
+  vt::toXYZ(c, lossy);
+  EXPECT_GT(std::abs(double(lossy[0].y) - points[0][1]), 1e-3);
+
+  // near the origin (within 16 extents): nothing moves
+  pcl::PCLPointCloud2 near = makeCloud(fields, 24, 2);
+  put(near, 0, 0, 30.0);
+  put(near, 1, 0, 32.0);
+  EXPECT_EQ(vt::recentringOffset(near), Eigen::Vector3d::Zero());
+  put(near, 0, 0, 40.0);
+  put(near, 1, 0, 41.2);
+  EXPECT_EQ(vt::recentringOffset(near), Eigen::Vector3d(40.0, 0.0, 0.0));
+  // no finite point: zero
+  pcl::PCLPointCloud2 none = makeCloud(fields, 24, 1);
+  put(none, 0, 0, std::nan(""));
+  EXPECT_EQ(vt::recentringOffset(none), Eigen::Vector3d::Zero());
 }
 
 TEST(WithoutFields, RemovesFieldsAndPaddingAndPacksTheRest)

@@ -99,6 +99,12 @@ struct GraphMetadata
   std::vector<std::string> warnings;
   /** \brief Notes on the input (getNotes()), written as "notes". */
   std::vector<std::string> notes;
+  /** \brief What was subtracted from the input's coordinates before the computation
+   * (world units; e.g. survey coordinates recentred before the cast to float).
+   * writeJson() adds it back to every coordinate it writes (the grid origin, the
+   * nodes' centroid, min and max), so the JSON is in the input's frame, and writes it
+   * as "offset". Zero (the default) when the cloud was not moved. */
+  Eigen::Vector3d offset = Eigen::Vector3d::Zero();
 };
 
 /** \brief The topology graph: which vertex touches which edge, which edge bounds which

@@ -16,8 +16,21 @@ constexpr double kSpacingsPerCell = 2.0;
 constexpr std::size_t kSpacingQueries = 10000;
 
 /** \brief Rank of the neighbour whose distance is measured (fewer when the cloud has
- * fewer points): 8 ignores a few duplicate points. */
+ * fewer points), counted in sites of the surface when points have copies (see
+ * kMaxCopies). */
 constexpr int kSpacingNeighbour = 8;
+
+/** \brief Most copies of a point the automatic resolution recognises: duplicate points
+ * (merged or re-exported scans) and copies a little apart (overlapping registered
+ * scans). Up to kSpacingNeighbour * kMaxCopies neighbours of each queried point are
+ * looked at. */
+constexpr int kMaxCopies = 8;
+
+/** \brief Points closer than this many apparent spacings (the spacing of all points,
+ * copies included) are copies of one site of the surface. On a clean, uniformly
+ * sampled surface about a quarter of the points have a neighbour that close, so the
+ * median copy count stays 1; on a cloud whose points all have a copy it is 2. */
+constexpr double kCopyRadiusSpacings = 0.3;
 
 /** \brief The automatic resolution of a cloud and how it was found (see
  * visfeat::estimateResolution() for a PCL cloud). */
@@ -29,8 +42,20 @@ struct ResolutionEstimate
   /** \brief Point spacing, world units: the mean distance between neighbours
    * (spacing^2 = surface area per point). */
   double spacing = 0.0;
-  /** \brief Rank of the neighbour measured. */
+  /** \brief Rank of the neighbour measured, in sites (a site is one point and its
+   * copies). */
   int k = 0;
+  /** \brief Copies of most points: the median, over the queried points, of the number
+   * of points within copy_radius of each (itself included). 1 for a clean cloud; 3
+   * when every point was stored three times (merged scans), 2 for two overlapping
+   * copies of a scan a little apart. The spacing is that of the sites: the distance
+   * measured is the one to the (k copies)-th neighbour, so the copies do not shrink it.
+   */
+  int copies = 1;
+  /** \brief Points closer than this are copies of one site, world units:
+   * kCopyRadiusSpacings times the apparent spacing (all points counted). 0 when not
+   * measured. */
+  double copy_radius = 0.0;
   /** \brief Points whose k-th neighbour distance was measured. */
   std::size_t queries = 0;
   /** \brief Longest side of the bounding box of the finite points, world units. */
@@ -63,5 +88,42 @@ int resolutionForSpacing(double extent, double spacing);
  *         have k or more duplicates"). */
 ResolutionEstimate
 resolutionFromNeighbourDistances(std::vector<double> distances, int k, double extent);
+
+/** \brief Sorted distances from queried points to their nearest neighbours (the point
+ * itself excluded), world units: row q is values[q * per_query, (q + 1) * per_query),
+ * ranks 1..per_query. */
+struct NeighbourDistanceTable
+{
+  std::size_t per_query = 0;
+  std::vector<double> values;
+
+  std::size_t queries() const { return per_query ? values.size() / per_query : 0; }
+  double at(std::size_t query, std::size_t rank) const
+  {
+    return values[query * per_query + rank - 1];
+  }
+};
+
+/** \brief The estimate with copies recognised (duplicate points, overlapping copies a
+ * little apart).
+ *
+ * 1. The apparent spacing: the median distance to the k-th neighbour that does not
+ *    coincide with the queried point (closer than 1e-9 extent), as
+ *    spacingFromNeighbourDistance() turns it into a spacing.
+ * 2. copy_radius = kCopyRadiusSpacings apparent spacings; each queried point's copy
+ *    count is 1 + its neighbours within copy_radius (at most kMaxCopies and
+ *    per_query / k); `copies` is the median count.
+ * 3. The spacing: resolutionFromNeighbourDistances() over the distances to the
+ *    (k copies)-th neighbour, the k-th site when every site has `copies` points. A
+ *    clean cloud (copies 1) gets exactly the k-th neighbour's estimate. The reason
+ *    says how many copies were found when there are any.
+ *
+ * Clouds where fewer than half the points have copies keep copies = 1 (their estimate
+ * is the plain one).
+ * \throws visfeat::Error when the table is empty, k is out of [1, per_query], or the
+ *         median distance is 0 (most points have k x copies points at distance 0: 64 or
+ * more with a full table; more than kMaxCopies copies are counted as kMaxCopies). */
+ResolutionEstimate
+resolutionFromNeighbourTable(const NeighbourDistanceTable& table, int k, double extent);
 
 } // namespace visfeat
