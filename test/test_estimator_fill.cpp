@@ -127,6 +127,31 @@ TEST(EstimatorFill, FiveTimesTheDensityOnOneFaceChangesNothing)
   EXPECT_TRUE(est.getWarnings().empty()) << est.getWarnings().front();
 }
 
+TEST(EstimatorFill, AxisAlignedFacesLieAtCellCentres)
+{
+  // an unrotated cube: its faces are the bounding box's sides; on cell boundaries their
+  // points and fill triangles split between two layers of cells (21/30/16 measured)
+  for (const std::uint64_t seed : {31u}) {
+    const Cloud::Ptr cloud = sparseCloud(syn::cadModelByName("cube"), 20000, seed);
+    Estimator est;
+    est.setInputCloud(cloud);
+    est.setResolution(0);
+    Output out;
+    est.compute(out);
+    ASSERT_EQ(est.getErrorMessage(), "");
+    EXPECT_EQ(counts(est), (std::array<std::size_t, 4>{8, 12, 6, 0})) << seed;
+    const visfeat::GridSpec& grid = est.getGrid();
+    Eigen::Vector3d lo = Eigen::Vector3d::Constant(1e30);
+    for (const pcl::PointXYZ& p : cloud->points)
+      lo = lo.cwiseMin(Eigen::Vector3d(p.x, p.y, p.z));
+    for (int a = 0; a < 3; ++a) {
+      // the lower sides: half a cell past a boundary
+      const double units = (lo[a] - grid.origin[a]) / grid.cell_size;
+      EXPECT_NEAR(units - std::floor(units), 0.5, 1e-3) << "axis " << a;
+    }
+  }
+}
+
 TEST(EstimatorFill, APointsOnlyBandOfASparseCloudWarns)
 {
   const syn::CadModel model =
