@@ -65,7 +65,7 @@ constexpr std::uint64_t kReferenceSeed = 4000;
 constexpr std::size_t kOctahedronDense = 560000;
 const Eigen::Vector3d kSurvey(512345.678, 4312345.123, 120.456);
 
-std::string
+[[maybe_unused]] std::string
 toString(const Counts& c)
 {
   return std::to_string(c[0]) + "/" + std::to_string(c[1]) + "/" + std::to_string(c[2]);
@@ -80,7 +80,7 @@ struct Result
 
 /** The pipeline with default options and the automatic resolution, as the tool's
  * default. */
-Result
+[[maybe_unused]] Result
 run(const Cloud::Ptr& cloud)
 {
   Estimator est;
@@ -96,7 +96,7 @@ run(const Cloud::Ptr& cloud)
   return r;
 }
 
-Counts
+[[maybe_unused]] Counts
 truthCounts(const syn::CadModel& model)
 {
   return {model.vertices.size(), model.curves.size(), model.faces.size()};
@@ -104,7 +104,7 @@ truthCounts(const syn::CadModel& model)
 
 /** The points in double, moved to `shift`, stored as FLOAT64 x y z and read back as
  * the tool reads a file: recentred in double, then cast to float. */
-Cloud::Ptr
+[[maybe_unused]] Cloud::Ptr
 throughSurveyCoordinates(const std::vector<Eigen::Vector3f>& points,
                          const Eigen::Vector3d& shift,
                          Eigen::Vector3d& offset)
@@ -133,7 +133,7 @@ throughSurveyCoordinates(const std::vector<Eigen::Vector3f>& points,
   return cloud;
 }
 
-Cloud::Ptr
+[[maybe_unused]] Cloud::Ptr
 sampled(const syn::CadModel& model, std::uint64_t seed, std::size_t count)
 {
   syn::SamplingOptions options;
@@ -142,7 +142,7 @@ sampled(const syn::CadModel& model, std::uint64_t seed, std::size_t count)
   return visfeat_test::sampleCadCloud(model, options).cloud;
 }
 
-double
+[[maybe_unused]] double
 secondsSince(std::chrono::steady_clock::time_point start)
 {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
@@ -151,6 +151,7 @@ secondsSince(std::chrono::steady_clock::time_point start)
 
 /** One generated model: a reference rotation must give the true counts; 20 further
  * rotations and the reference sample moved to survey coordinates give the same. */
+#ifndef VISFEAT_COPIES_ONLY // the rotations: label invariance, test.sh --invariance
 class Invariance : public ::testing::TestWithParam<std::string>
 {};
 
@@ -198,9 +199,10 @@ INSTANTIATE_TEST_SUITE_P(GeneratedModels,
                          [](const ::testing::TestParamInfo<std::string>& info) {
                            return info.param;
                          });
+#endif
 
 /** `base` `times` times, the c-th copy moved by c `shift`. */
-Cloud::Ptr
+[[maybe_unused]] Cloud::Ptr
 copiesOf(const Cloud& base, int times, const Eigen::Vector3f& shift)
 {
   auto out = std::make_shared<Cloud>();
@@ -211,6 +213,7 @@ copiesOf(const Cloud& base, int times, const Eigen::Vector3f& shift)
   return out;
 }
 
+#ifndef VISFEAT_INVARIANCE_ONLY // the copies: label acceptance
 TEST(Copies, DuplicatedAndOverlappingOctahedronGiveTheCleanCounts)
 {
   const syn::CadModel model =
@@ -243,5 +246,7 @@ TEST(Copies, DuplicatedAndOverlappingOctahedronGiveTheCleanCounts)
     }
   }
 }
+
+#endif
 
 } // namespace
