@@ -98,7 +98,8 @@ useCloud(const pcl::PCLPointCloud2& cloud)
   if (n == 0)
     return;
   pcl::PointCloud<pcl::PointXYZ> xyz;
-  visfeat_tools::toXYZ(cloud, xyz);
+  // as the tool: far clouds are recentred in double before the cast to float
+  visfeat_tools::toXYZ(cloud, xyz, visfeat_tools::recentringOffset(cloud));
   if (xyz.size() != n)
     fail("toXYZ gave " + std::to_string(xyz.size()) + " points for " +
          std::to_string(n));

@@ -8,7 +8,7 @@ set -euo pipefail
 
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 corpus="$here/corpus"
-mkdir -p "$corpus"/{pcd,off,stl,ply_obj}
+mkdir -p "$corpus"/{pcd,off,stl,ply_obj,xyz}
 rm -f "$corpus"/*/seed_*
 
 put() { printf '%b' "$2" >"$corpus/$1"; } # put reader/seed_name 'bytes (printf %b)'
@@ -36,6 +36,15 @@ put pcd/seed_compressed_short.pcd "${xyz_header}WIDTH 2\nHEIGHT 1\nPOINTS 2\nDAT
 put pcd/seed_text.pcd "hello, this is not a point cloud\n"
 put pcd/seed_zero_points.pcd "${xyz_header}WIDTH 0\nHEIGHT 1\nPOINTS 0\nDATA ascii\n"
 put pcd/seed_crlf.pcd "FIELDS x y z\r\nSIZE 4 4 4\r\nTYPE F F F\r\nWIDTH 1\r\nHEIGHT 1\r\nPOINTS 1\r\nDATA ascii\r\n1 2 3\r\n"
+
+# --- xyz: readTextCloud through loadCloud ---------------------------------------------
+put xyz/seed_plain.xyz "0 0 0\n1 0 0\n0 1 0.5\n"
+put xyz/seed_header_commas.xyz "x,y,z,intensity\n0.5,0.25,1e3,7\n-1,-2,-3,8\n"
+put xyz/seed_survey.xyz "512345.678 4312345.123 120.456\n512346.678 4312345.123 120.456\n512345.678 4312346.123 121.456\n"
+put xyz/seed_tabs_crlf.xyz "1\t2\t3\r\n4\t5\t6\r\n"
+put xyz/seed_short_row.xyz "0 0 0\n1 0\n"
+put xyz/seed_nan_text.xyz "nan 0 0\n1 inf 0\nabc 1 2\n"
+put xyz/seed_empty_lines.xyz "\n\n# comment\n0 0 0\n"
 
 # --- off: visfeat::readOff through loadMeshAsCloud ------------------------------------
 put off/seed_tetrahedron.off "OFF\n4 4 6\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n"
