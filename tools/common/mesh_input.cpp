@@ -18,10 +18,14 @@
 #include <pcl/point_types.h>
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <memory>
 #include <sstream>
 #include <vector>
+
+#include <unistd.h>
 
 namespace visfeat_tools {
 
@@ -201,6 +205,59 @@ stlProblem(const std::string& path)
   return "";
 }
 
+namespace {
+
+/** A copy of an OBJ file for PCL 1.13's reader, removed with this object: lines of only
+ * spaces, tabs or CRs emptied (the reader takes a token from them: a crash, found by
+ * fuzzing; CRLF files often have such lines) and the material lines (mtllib, usemtl)
+ * emptied too, as the band needs the geometry only; line numbers are kept, so the
+ * guard's messages name the user's lines. */
+class ObjGeometryCopy
+{
+public:
+  explicit ObjGeometryCopy(const std::string& path)
+  {
+    static int serial = 0;
+    const std::filesystem::path copy = std::filesystem::temp_directory_path() /
+                                       ("visfeat_obj_" + std::to_string(::getpid()) +
+                                        "_" + std::to_string(serial++) + ".obj");
+    std::ifstream in(path, std::ios::binary);
+    std::ofstream out(copy, std::ios::binary);
+    if (!in || !out)
+      return;
+    std::string line;
+    while (std::getline(in, line)) {
+      const std::size_t first = line.find_first_not_of(" \t\r");
+      const bool blank = first == std::string::npos;
+      const bool material = !blank && (line.compare(first, 7, "mtllib ") == 0 ||
+                                       line.compare(first, 7, "mtllib\t") == 0 ||
+                                       line.compare(first, 7, "usemtl ") == 0 ||
+                                       line.compare(first, 7, "usemtl\t") == 0 ||
+                                       line == "mtllib" || line == "usemtl");
+      out << (blank || material ? std::string() : line) << '\n';
+    }
+    if (in.bad() || !out.flush())
+      return;
+    path_ = copy.string();
+  }
+  ~ObjGeometryCopy()
+  {
+    std::error_code ignored;
+    if (!path_.empty())
+      std::filesystem::remove(path_, ignored);
+  }
+  ObjGeometryCopy(const ObjGeometryCopy&) = delete;
+  ObjGeometryCopy& operator=(const ObjGeometryCopy&) = delete;
+
+  /** The copy's path; "" when it could not be written. */
+  const std::string& path() const { return path_; }
+
+private:
+  std::string path_;
+};
+
+} // namespace
+
 bool
 loadMesh(const std::string& path, visfeat::SurfaceMesh& mesh, std::string& error)
 {
@@ -232,9 +289,18 @@ loadMesh(const std::string& path, visfeat::SurfaceMesh& mesh, std::string& error
       error = "'" + path + "': not a valid PLY mesh: " + problem;
       return false;
     }
-  } else if (ext == ".obj") {
+  }
+  // PCL's OBJ reader gets a copy without blank-but-not-empty and material lines
+  std::unique_ptr<ObjGeometryCopy> obj;
+  if (ext == ".obj") {
+    obj = std::make_unique<ObjGeometryCopy>(path);
+    if (obj->path().empty()) {
+      error = "'" + path + "': cannot copy the OBJ file's geometry to " +
+              std::filesystem::temp_directory_path().string();
+      return false;
+    }
     // PCL's OBJ reader reads past its buffers on some lines: check them first
-    const std::string problem = objProblem(path);
+    const std::string problem = objProblem(obj->path());
     if (!problem.empty()) {
       error = "'" + path + "': not a valid OBJ mesh: " + problem;
       return false;
@@ -248,7 +314,7 @@ loadMesh(const std::string& path, visfeat::SurfaceMesh& mesh, std::string& error
       if (ext == ".stl")
         return pcl::io::loadPolygonFileSTL(path, polygons) > 0 ? 0 : -1;
       return ext == ".ply" ? pcl::io::loadPLYFile(path, polygons)
-                           : pcl::io::loadOBJFile(path, polygons);
+                           : pcl::io::loadOBJFile(obj->path(), polygons);
     });
   } catch (const std::exception&) {
     rc = -1;

@@ -104,6 +104,27 @@ TEST_F(InputGuards, StlProblemRefusesAsciiWithBinaryBytes)
     "binary STL of the wrong size)");
 }
 
+TEST_F(InputGuards, ObjMeshesAreReadWithoutBlankAndMaterialLines)
+{
+  // a CRLF file with blank lines, and material libraries that are missing or not
+  // files (PCL looped forever on 'mtllib .'): loadMesh hands PCL a copy without those
+  // lines and reads the geometry
+  visfeat::SurfaceMesh mesh;
+  std::string error;
+  const std::string crlf = "\r\nv 0 0 0\r\n \t\r\nv 1 0 0\r\nv 0 1 0\r\nf 1 2 3\r\n";
+  ASSERT_TRUE(vt::loadMesh(write("crlf.obj", crlf), mesh, error)) << error;
+  EXPECT_EQ(mesh.vertices.size(), 3u);
+  EXPECT_EQ(mesh.triangles.size(), 1u);
+  for (const std::string lib : {"mtllib .\n", "mtllib gone.mtl\nusemtl red\n"}) {
+    ASSERT_TRUE(vt::loadMesh(write("lib.obj", lib + kTriangleObj), mesh, error))
+      << lib << error;
+    EXPECT_EQ(mesh.triangles.size(), 1u);
+  }
+  // the guard still names the user's line numbers
+  EXPECT_FALSE(vt::loadMesh(write("short.obj", "\r\nv 0 0\n"), mesh, error));
+  EXPECT_NE(error.find("line 2"), std::string::npos) << error;
+}
+
 TEST_F(InputGuards, ObjProblemRefusesLinesOfOnlySpacesTabsOrCRs)
 {
   // PCL 1.13 read the first token of a line that has none: a null dereference on a
