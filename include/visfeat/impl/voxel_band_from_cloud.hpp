@@ -8,6 +8,7 @@
 #include <pcl/octree/octree_pointcloud_pointvector.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -66,6 +67,24 @@ gridForCloud(const pcl::PointCloud<PointT>& cloud, int resolution)
   if (finite == 1)
     throw Error("the cloud has a single finite point: there is no surface to analyse");
   GridSpec grid = GridSpec::fromBounds(lo, hi, resolution);
+  // Axis-aligned faces on the box's sides go to cell centres (withSidesAtCellCentres):
+  // a side holds a face when more than kMinSidePoints points (and a thousandth of
+  // them) lie on it; a rotated part touches its box at a few points only.
+  constexpr std::size_t kMinSidePoints = 16;
+  const double on_side = 1e-6 * (hi - lo).maxCoeff();
+  std::array<std::size_t, 3> side_points{0, 0, 0};
+  for (const PointT& p : cloud.points) {
+    if (!pcl::isXYZFinite(p))
+      continue;
+    const Eigen::Vector3d v(p.x, p.y, p.z);
+    for (int a = 0; a < 3; ++a)
+      if (v[a] - lo[a] <= on_side || hi[a] - v[a] <= on_side)
+        ++side_points[static_cast<std::size_t>(a)];
+  }
+  std::array<bool, 3> aligned{false, false, false};
+  for (std::size_t a = 0; a < 3; ++a)
+    aligned[a] = side_points[a] > std::max(kMinSidePoints, finite / 1000);
+  grid = grid.withSidesAtCellCentres(aligned);
   pcl::octree::OctreePointCloudPointVector<PointT> octree(grid.cell_size);
   grid.origin = detail::defineOctreeBox(octree, grid);
   return grid;

@@ -41,11 +41,9 @@ GridSpec::fromBounds(const Eigen::Vector3d& min,
         << ": lower the resolution or move the cloud near the origin";
     throw Error(msg.str());
   }
-  // The box's sides at cell centres: an axis-aligned face on a cell boundary would
-  // split its points (and a fill's triangles, by rounding) between two layers of cells.
-  grid.origin = min - Eigen::Vector3d::Constant((kPadding + 0.5) * grid.cell_size);
+  grid.origin = min - Eigen::Vector3d::Constant(kPadding * grid.cell_size);
   for (int a = 0; a < 3; ++a) {
-    const double cells = std::floor(size[a] / grid.cell_size + 0.5);
+    const double cells = std::floor(size[a] / grid.cell_size);
     grid.dims[a] =
       static_cast<int>(std::min(cells, double(resolution))) + 1 + 2 * kPadding;
   }

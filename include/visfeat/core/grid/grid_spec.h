@@ -4,6 +4,7 @@
 
 #include <Eigen/Core>
 
+#include <array>
 #include <cstdint>
 
 namespace visfeat {
@@ -27,10 +28,7 @@ linearKey(const Eigen::Vector3i& c, const Eigen::Vector3i& dims)
  * Cell (i, j, k) spans origin + cell_size * [i, i+1) x [j, j+1) x [k, k+1).
  * A grid made by fromBounds() follows DESIGN.md: cell_size = extent / resolution,
  * where extent is the largest side of the bounding box, and a padding of
- * kPadding + 1/2 cells on every side so that every dilation stays inside the grid and
- * the box's sides lie at cell centres: an axis-aligned face on a cell boundary splits
- * its points, and by rounding a fill's triangles, between two layers of cells (an
- * axis-aligned cube of 20,000 points gave 21/30/16 with the sides on boundaries).
+ * kPadding cells on every side so that every dilation stays inside the grid.
  */
 struct GridSpec
 {
@@ -57,6 +55,22 @@ struct GridSpec
    */
   static GridSpec
   fromBounds(const Eigen::Vector3d& min, const Eigen::Vector3d& max, int resolution);
+
+  /** \brief The same grid moved half a cell towards -axis, one cell longer, on each
+   * flagged axis: the bounding box's sides on that axis then lie at cell centres. For
+   * clouds with a face on a side of their box (axis-aligned parts): on a cell boundary
+   * its points, and by rounding a fill's triangles, split between two layers of cells
+   * (an unrotated cube of 20,000 points gave 21/30/16; see gridForCloud()). */
+  GridSpec withSidesAtCellCentres(const std::array<bool, 3>& axes) const
+  {
+    GridSpec grid = *this;
+    for (int a = 0; a < 3; ++a)
+      if (axes[static_cast<std::size_t>(a)]) {
+        grid.origin[a] -= 0.5 * cell_size;
+        grid.dims[a] += 1;
+      }
+    return grid;
+  }
 
   /** \brief Number of cells of the grid. */
   std::uint64_t cellCount() const
