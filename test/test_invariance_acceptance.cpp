@@ -20,6 +20,7 @@
 #include "band_fixtures.h"
 
 #include "common/cloud_input.h"
+#include "common/double_xyz_cloud.h"
 
 #include <support/cad_models.h>
 #include <support/synthetic_shapes.h>
@@ -109,24 +110,10 @@ throughSurveyCoordinates(const std::vector<Eigen::Vector3f>& points,
                          const Eigen::Vector3d& shift,
                          Eigen::Vector3d& offset)
 {
-  pcl::PCLPointCloud2 c;
-  for (const char* name : {"x", "y", "z"}) {
-    pcl::PCLPointField f;
-    f.name = name;
-    f.offset = static_cast<std::uint32_t>(8 * c.fields.size());
-    f.datatype = pcl::PCLPointField::FLOAT64;
-    f.count = 1;
-    c.fields.push_back(f);
-  }
-  c.point_step = 24;
-  c.width = static_cast<std::uint32_t>(points.size());
-  c.height = 1;
-  c.row_step = 24 * c.width;
-  c.data.resize(24 * points.size());
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    const Eigen::Vector3d p = points[i].cast<double>() + shift;
-    std::memcpy(c.data.data() + 24 * i, p.data(), 24);
-  }
+  std::vector<Eigen::Vector3d> in_double(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i)
+    in_double[i] = points[i].cast<double>();
+  const pcl::PCLPointCloud2 c = visfeat_tools::doubleXYZCloud(in_double, shift);
   offset = visfeat_tools::recentringOffset(c);
   auto cloud = std::make_shared<Cloud>();
   visfeat_tools::toXYZ(c, *cloud, offset);

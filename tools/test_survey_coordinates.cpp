@@ -5,6 +5,7 @@
 // the centred run; the output keeps the input's double coordinates, and the graph JSON
 // is in the input's frame with its "offset". About 10 s on 2 cores: label tools.
 
+#include "common/double_xyz_cloud.h"
 #include "common/test/temp_dir.h"
 
 #include <support/cad_models.h>
@@ -65,26 +66,7 @@ protected:
 pcl::PCLPointCloud2
 doubleCloud(const std::vector<Eigen::Vector3d>& points, const Eigen::Vector3d& shift)
 {
-  pcl::PCLPointCloud2 c;
-  for (const char* name : {"x", "y", "z"}) {
-    pcl::PCLPointField f;
-    f.name = name;
-    f.offset = static_cast<std::uint32_t>(8 * c.fields.size());
-    f.datatype = pcl::PCLPointField::FLOAT64;
-    f.count = 1;
-    c.fields.push_back(f);
-  }
-  c.point_step = 24;
-  c.width = static_cast<std::uint32_t>(points.size());
-  c.height = 1;
-  c.row_step = c.point_step * c.width;
-  c.is_dense = true;
-  c.data.resize(points.size() * 24);
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    const Eigen::Vector3d p = points[i] + shift;
-    std::memcpy(c.data.data() + 24 * i, p.data(), 24);
-  }
-  return c;
+  return visfeat_tools::doubleXYZCloud(points, shift);
 }
 
 /** Field `name` of every point of a PCD file, as double. */

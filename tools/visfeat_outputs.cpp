@@ -4,6 +4,7 @@
 
 #include "common/arguments.h"
 #include "common/cloud_input.h"
+#include "common/double_xyz_cloud.h"
 #include "common/output_files.h"
 #include "common/tool_main.h"
 #include "picture/render_picture.h"
@@ -88,26 +89,14 @@ withDoubleXYZ(const pcl::PCLPointCloud2& cells,
               const visfeat::VoxelBand& band,
               const Eigen::Vector3d& offset)
 {
-  pcl::PCLPointCloud2 xyz;
+  std::vector<Eigen::Vector3d> centres(band.size());
+  for (std::size_t id = 0; id < band.size(); ++id)
+    centres[id] =
+      band.grid().cellCenter(band.coord(static_cast<visfeat::CellId>(id))) + offset;
+  pcl::PCLPointCloud2 xyz = visfeat_tools::doubleXYZCloud(centres);
   xyz.width = cells.width;
   xyz.height = cells.height;
-  xyz.is_dense = true;
-  for (const char* name : {"x", "y", "z"}) {
-    pcl::PCLPointField field;
-    field.name = name;
-    field.offset = static_cast<std::uint32_t>(8 * xyz.fields.size());
-    field.datatype = pcl::PCLPointField::FLOAT64;
-    field.count = 1;
-    xyz.fields.push_back(field);
-  }
-  xyz.point_step = 24;
   xyz.row_step = xyz.point_step * xyz.width;
-  xyz.data.resize(band.size() * 24);
-  for (std::size_t id = 0; id < band.size(); ++id) {
-    const Eigen::Vector3d centre =
-      band.grid().cellCenter(band.coord(static_cast<visfeat::CellId>(id))) + offset;
-    std::memcpy(xyz.data.data() + 24 * id, centre.data(), 24);
-  }
   pcl::PCLPointCloud2 merged;
   pcl::concatenateFields(withoutFields(cells, {"x", "y", "z"}), xyz, merged);
   return merged;
