@@ -3,6 +3,8 @@
 // type, and fields removed before new ones of the same names are added.
 #pragma once
 
+#include "common/pcd_check.h"
+
 #include <pcl/PCLPointCloud2.h>
 #include <pcl/point_cloud.h>
 #include <pcl/point_types.h>
@@ -15,17 +17,6 @@
 #include <string>
 
 namespace visfeat_tools {
-
-/** \brief Validate a PCD header before PCL reads the file.
- *
- * PCL 1.13's PCDReader dereferences garbage when the header has no FIELDS line or is
- * not a PCD header at all (a text file or an empty file renamed .pcd crashes it), so
- * the header is checked first: the keywords FIELDS, SIZE, TYPE, WIDTH, POINTS and
- * DATA, consistent counts, and for DATA binary a file long enough for the points.
- * `file_size` is the size of the file in bytes. On failure `problem` says what is
- * wrong (without the file name). */
-bool
-checkPcdHeader(const std::string& path, std::uintmax_t file_size, std::string& problem);
 
 /** \brief Check that `path` is a regular file that can be opened and is not empty;
  * false + `error` (one line naming the file) when not. `size` is its size in bytes. */
