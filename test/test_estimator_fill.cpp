@@ -131,7 +131,8 @@ TEST(EstimatorFill, AxisAlignedFacesLieAtCellCentres)
 {
   // an unrotated cube: its faces are the bounding box's sides; on cell boundaries their
   // points and fill triangles split between two layers of cells (21/30/16 measured)
-  for (const std::uint64_t seed : {31u}) {
+  {
+    const std::uint64_t seed = 31;
     const Cloud::Ptr cloud = sparseCloud(syn::cadModelByName("cube"), 20000, seed);
     Estimator est;
     est.setInputCloud(cloud);

@@ -3,6 +3,7 @@
 
 #include "common/cloud_input.h"
 
+#include "pcd_header_test.h"
 #include "temp_dir.h"
 
 #include <pcl/common/io.h>
@@ -45,21 +46,7 @@ pcd(const std::string& type, int points, const std::string& data)
 
 const std::string kTwoPoints = pcd("ascii", 2, "1 2 3\n4 5 6\n");
 
-/** \brief checkPcdHeader() on `content` written to a file: "" when it passes, else
- * the problem. */
-class PcdHeader : public vt::test::TempDirTest
-{
-protected:
-  std::string problemOf(const std::string& content)
-  {
-    const std::string p = write("h.pcd", content);
-    std::string problem;
-    if (vt::checkPcdHeader(p, fs::file_size(p), problem))
-      return "";
-    EXPECT_NE(problem, "");
-    return problem;
-  }
-};
+using PcdHeader = vt::test::PcdHeaderTest;
 
 /** \brief `header` with the line starting with `key` replaced by `line` ("" drops
  * it). */

@@ -6,6 +6,7 @@
 #include "common/mesh_input.h"
 #include "common/obj_check.h"
 
+#include "pcd_header_test.h"
 #include "temp_dir.h"
 
 #include <visfeat/core/common/error.h>
@@ -183,20 +184,7 @@ TEST(ReadOff, RefusesAFaceCountThatWrapsAround)
   EXPECT_THROW(visfeat::readOff(in), visfeat::Error);
 }
 
-/** \brief checkPcdHeader() on `content`: "" when it passes, else the problem. */
-class PcdGuards : public vt::test::TempDirTest
-{
-protected:
-  std::string problemOf(const std::string& content)
-  {
-    const std::string p = write("h.pcd", content);
-    std::string problem;
-    if (vt::checkPcdHeader(p, fs::file_size(p), problem))
-      return "";
-    EXPECT_NE(problem, "");
-    return problem;
-  }
-};
+using PcdGuards = vt::test::PcdHeaderTest;
 
 const std::string kXYZ = "FIELDS x y z\nSIZE 4 4 4\nTYPE F F F\n";
 
