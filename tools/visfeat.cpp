@@ -368,7 +368,13 @@ printSummary(const Estimator& estimator, const vt::Options& opt)
     print_info(", fill cells ");
     print_value("%zu", band.fillCellCount());
   }
-  print_info(")\n");
+  print_info(")");
+  if (band.roughness() >= 0.0) {
+    print_info(", roughness ");
+    print_value("%.3f", band.roughness());
+    print_info(" cells");
+  }
+  print_info("\n");
   const visfeat::PhaseTimes& times = estimator.getPhaseTimes();
   print_info("Phases: grid ");
   print_value("%.1f", times.grid_ms);

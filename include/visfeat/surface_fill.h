@@ -72,6 +72,20 @@ constexpr double kFillCheckPointsPerCell2 = 4.0;
 constexpr const char* kNoisyScanAdvice =
   "; if the scan is noisy, use noise mode (setNoiseMode(true))";
 
+/** \brief compute() warns, outside the noise mode, when the band's roughness
+ * (VoxelBand::roughness(), cells) is above this: the points scatter about the surface
+ * more than the exact band bears. Measured on the generated models at 256 cells (0.5-
+ * cell spacing, Gaussian noise sigma per coordinate): roughness is about 0.8 sigma
+ * (0.000 clean, 0.029 at sigma 0.05, 0.066 at 0.1, 0.11 at 0.15, 0.18 at 0.22); counts
+ * stay exact up to 0.124 (sigma 0.16) on cube, tetrahedron, icosahedron, U-prism, box
+ * with hole and cylinder, and break from 0.150 (U-prism and box with hole at sigma
+ * 0.19; cube and icosahedron at 0.22: 4/8/5 and 1/3/8). */
+constexpr double kNoisyRoughness = 0.13;
+
+/** \brief The roughness the warning's suggested resolution aims at, cells: 0.10 (sigma
+ * about 0.12, exact on every generated model, see kNoisyRoughness). */
+constexpr double kCalmRoughness = 0.10;
+
 /** \brief compute() warns when fewer of the band's cells than this reach min_radius
  * (the face cores): measured 0.3-0.6 on the generated models at 256 cells, 0.11 on a
  * 20,000-point cube at the 48 cells its density alone allows (1 face of 6 found). */

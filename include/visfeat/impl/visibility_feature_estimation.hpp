@@ -401,6 +401,20 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::checkResults(const Results& re
       w << kNoisyScanAdvice;
     run.warnings.push_back(w.str());
   }
+  if (!noise_mode_ && band.roughness() > kNoisyRoughness) {
+    // cells grow as the resolution drops: roughness scales with it
+    const int calmer = std::max(
+      GridSpec::kMinResolution,
+      static_cast<int>(std::floor(resolution * kCalmRoughness / band.roughness())));
+    std::ostringstream r;
+    r << "the points scatter about the surface: roughness "
+      << std::round(1000.0 * band.roughness()) / 1000.0
+      << " cells (RMS distance of the cells' point centroids to local planes; clean "
+         "clouds give about 0, and counts break from about 0.15): the result may be "
+         "wrong; use noise mode (setNoiseMode(true)) or a resolution of "
+      << calmer << " or lower";
+    run.warnings.push_back(r.str());
+  }
   if (repair_share > kMaxRepairShare) {
     std::ostringstream r;
     r << "the band has holes: " << band.repairCellCount() << " of " << band.size()

@@ -1,3 +1,4 @@
+#include <visfeat/core/band/band_roughness.h>
 #include <visfeat/core/band/voxel_band.h>
 #include <visfeat/core/common/error.h>
 #include <visfeat/core/common/threads.h>
@@ -254,6 +255,7 @@ VoxelBand::build(const GridSpec& grid,
   VoxelBand band;
   band.grid_ = grid;
   band.fill_cells_ = fill_cells;
+  band.roughness_ = bandRoughness(grid, coords, counts, sums);
   if (options.repair)
     band.repair_cells_ = BandRepair(grid, coords, counts, sums).run();
   band.finalize(std::move(coords), std::move(counts), options.threads);

@@ -116,6 +116,11 @@ public:
   /** \brief Cells that came from the fill (build()'s `fill`) and hold no point. */
   std::size_t fillCellCount() const { return fill_cells_; }
 
+  /** \brief How far the points scatter about the surface, cells (bandRoughness() of
+   * the occupied cells, measured by build()); -1 when not measured (too few points a
+   * cell, or a band made by fromCells()). */
+  double roughness() const { return roughness_; }
+
   /** \brief Bytes held by the band (cells, neighbours, index, point map). */
   std::uint64_t memoryBytes() const;
 
@@ -136,6 +141,7 @@ private:
   CellIndex index_;
   std::size_t repair_cells_ = 0;
   std::size_t fill_cells_ = 0;
+  double roughness_ = -1.0;
 };
 
 } // namespace visfeat
