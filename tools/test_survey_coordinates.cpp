@@ -3,12 +3,14 @@
 // and a text .xyz cloud, against the same points centred at the origin (a float PCD).
 // The tool recentres in double before the cast to float, so the labels are those of
 // the centred run; the output keeps the input's double coordinates, and the graph JSON
-// is in the input's frame with its "offset". About 10 s on 2 cores: label tools.
+// is in the input's frame with its "offset". A mesh (.off) in survey coordinates gives
+// the centred mesh's graph and samples. About 30 s on 2 cores: label tools.
 
 #include "common/double_xyz_cloud.h"
 #include "common/test/temp_dir.h"
 
 #include <support/cad_models.h>
+#include <support/cad_tessellation.h>
 
 #include <pcl/common/io.h>
 #include <pcl/io/pcd_io.h>
@@ -233,6 +235,77 @@ TEST_F(SurveyCoordinates, SameLabelsAndTheInputsCoordinatesBack)
     EXPECT_NEAR(g["grid"]["origin"][0].get<double>(),
                 graph["grid"]["origin"][0].get<double>() + kSurvey[0], 1e-3);
   }
+}
+
+/** An OFF file of `mesh` moved by `shift`, vertices to 17 digits. */
+void
+writeOff(const std::string& file,
+         const visfeat::SurfaceMesh& mesh,
+         const Eigen::Vector3d& shift)
+{
+  std::ofstream out(file);
+  out << "OFF\n" << mesh.vertices.size() << " " << mesh.triangles.size() << " 0\n";
+  char line[160];
+  for (const Eigen::Vector3d& v : mesh.vertices) {
+    const Eigen::Vector3d q = v + shift;
+    std::snprintf(line, sizeof(line), "%.17g %.17g %.17g\n", q.x(), q.y(), q.z());
+    out << line;
+  }
+  for (const auto& t : mesh.triangles)
+    out << "3 " << t[0] << " " << t[1] << " " << t[2] << "\n";
+}
+
+TEST_F(SurveyCoordinates, AMeshIsRecentredLikeACloud)
+{
+  // the box with hole's tessellation, 9.8 m across, centred and near kSurvey (OFF)
+  syn::CadMesh tessellation = syn::tessellateCadModel(
+    syn::rotated(syn::cadModelByName("box_with_hole"), syn::randomRotation(72)), 1e-3);
+  visfeat::SurfaceMesh& mesh = tessellation.mesh;
+  Eigen::AlignedBox3d box;
+  for (const Eigen::Vector3d& v : mesh.vertices)
+    box.extend(v);
+  for (Eigen::Vector3d& v : mesh.vertices)
+    v = (v - box.center()) * (9.8 / box.sizes().maxCoeff());
+  writeOff(path("centred.off"), mesh, Eigen::Vector3d::Zero());
+  writeOff(path("survey.off"), mesh, kSurvey);
+
+  std::string log;
+  ASSERT_EQ(runTool(path("centred.off"), "centred", log), 0) << log;
+  EXPECT_EQ(log.find("Recentred"), std::string::npos) << log;
+  ASSERT_EQ(runTool(path("survey.off"), "survey", log), 0) << log;
+  EXPECT_NE(log.find("Recentred: the computation runs on x y z minus (512350 "
+                     "4312350 120)"),
+            std::string::npos)
+    << log;
+  const nlohmann::json centred = readJson(path("centred.json"));
+  const nlohmann::json survey = readJson(path("survey.json"));
+  EXPECT_EQ(survey["offset"], nlohmann::json::array({512350.0, 4312350.0, 120.0}));
+  EXPECT_EQ(survey["counts"], centred["counts"]);
+
+  pcl::PCLPointCloud2 a, b;
+  ASSERT_EQ(pcl::io::loadPCDFile(path("out_centred.pcd"), a), 0);
+  ASSERT_EQ(pcl::io::loadPCDFile(path("out_survey.pcd"), b), 0);
+  std::uint8_t type = 0;
+  // the same samples (same seed, the recentred mesh is the centred one moved), in the
+  // input's frame, in double
+  for (int axis = 0; axis < 3; ++axis) {
+    const std::string name(1, char('x' + axis));
+    const std::vector<double> u = column(a, name, &type);
+    const std::vector<double> v = column(b, name, &type);
+    EXPECT_EQ(type, pcl::PCLPointField::FLOAT64);
+    ASSERT_EQ(u.size(), v.size());
+    double worst = 0.0;
+    for (std::size_t i = 0; i < u.size(); ++i)
+      worst = std::max(worst, std::abs(v[i] - (u[i] + kSurvey[axis])));
+    EXPECT_LT(worst, 1e-3) << "axis " << axis;
+  }
+  const std::vector<double> ka = column(a, "feature_class", &type);
+  const std::vector<double> kb = column(b, "feature_class", &type);
+  ASSERT_EQ(ka.size(), kb.size());
+  std::size_t differ = 0;
+  for (std::size_t i = 0; i < ka.size(); ++i)
+    differ += ka[i] != kb[i];
+  EXPECT_LE(differ, ka.size() / 1000) << differ << " of " << ka.size();
 }
 
 } // namespace

@@ -169,6 +169,8 @@ struct Input
   std::shared_ptr<const visfeat::SurfaceMesh> mesh; // mesh input: its triangles
   /** \brief Subtracted from x y z before the cast to float (vt::recentringOffset). */
   Eigen::Vector3d offset = Eigen::Vector3d::Zero();
+  /** \brief Mesh input: the offset its vertices were recentred by (loadMeshAsCloud). */
+  Eigen::Vector3d mesh_offset = Eigen::Vector3d::Zero();
 };
 
 /** \brief Load the input cloud, or sample the input mesh, printing what was loaded. */
@@ -184,9 +186,9 @@ loadInput(const vt::Options& opt,
   print_value("%s ", opt.input.c_str());
   const bool mesh = vt::isMeshFile(opt.input);
   std::string summary;
-  if (mesh
-        ? !vt::loadMeshAsCloud(opt.input, opt.mesh, in.cloud, in.mesh, summary, error)
-        : !vt::loadCloud(opt.input, in.cloud, in.origin, in.orientation, error)) {
+  if (mesh ? !vt::loadMeshAsCloud(opt.input, opt.mesh, in.cloud, in.mesh,
+                                  in.mesh_offset, summary, error)
+           : !vt::loadCloud(opt.input, in.cloud, in.origin, in.orientation, error)) {
     print_info("\n");
     return false;
   }
@@ -221,7 +223,9 @@ prepareXYZ(vt::Options& opt, bool user_resolution, Input& in, std::string& error
   }
   in.xyz = std::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
   // far from the origin (survey coordinates): recentred in double, then cast to float
-  in.offset = in.mesh ? Eigen::Vector3d::Zero() : vt::recentringOffset(in.cloud);
+  // (a mesh was recentred when it was loaded, and its samples are given back in the
+  // input's frame: the same offset takes them to the recentred mesh)
+  in.offset = in.mesh ? in.mesh_offset : vt::recentringOffset(in.cloud);
   vt::toXYZ(in.cloud, *in.xyz, in.offset);
   if (!in.offset.isZero()) {
     print_info("Recentred: the computation runs on x y z minus (");

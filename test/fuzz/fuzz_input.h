@@ -133,8 +133,10 @@ loadMeshAsTool(const std::string& path)
   density.points = 64;
   pcl::PCLPointCloud2 cloud;
   std::shared_ptr<const visfeat::SurfaceMesh> mesh;
+  Eigen::Vector3d offset;
   std::string summary, error;
-  if (!visfeat_tools::loadMeshAsCloud(path, density, cloud, mesh, summary, error)) {
+  if (!visfeat_tools::loadMeshAsCloud(path, density, cloud, mesh, offset, summary,
+                                      error)) {
     checkError(path, error);
     return;
   }

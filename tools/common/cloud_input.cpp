@@ -237,6 +237,12 @@ recentringOffset(const pcl::PCLPointCloud2& in)
     lo = lo.cwiseMin(p);
     hi = hi.cwiseMax(p);
   });
+  return recentringOffset(lo, hi);
+}
+
+Eigen::Vector3d
+recentringOffset(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi)
+{
   if (!(lo.array() <= hi.array()).all())
     return Eigen::Vector3d::Zero(); // no finite point
   const double extent = (hi - lo).maxCoeff();

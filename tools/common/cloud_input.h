@@ -66,6 +66,10 @@ constexpr double kRecentreExtents = 16.0;
  * Call hasXYZ() first. */
 Eigen::Vector3d recentringOffset(const pcl::PCLPointCloud2& in);
 
+/** \brief The same rule for a bounding box [lo, hi] (world units, double): zero when it
+ * is empty (lo > hi on an axis) or within kRecentreExtents extents of the origin. */
+Eigen::Vector3d recentringOffset(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi);
+
 /** \brief x, y, z of a PCLPointCloud2 minus `offset`, as PointXYZ: the subtraction in
  * double precision, then the cast to float. fromPCLPointCloud2 when they are float and
  * the offset is zero (the usual case), else converted from whatever numeric type they

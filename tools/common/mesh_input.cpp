@@ -4,6 +4,7 @@
 
 #include "common/arguments.h"
 #include "common/cloud_input.h"
+#include "common/double_xyz_cloud.h"
 #include "common/obj_check.h"
 #include "common/tool_main.h"
 
@@ -21,6 +22,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <limits>
 #include <memory>
 #include <sstream>
 #include <vector>
@@ -337,6 +339,7 @@ loadMeshAsCloud(const std::string& path,
                 const MeshDensity& density,
                 pcl::PCLPointCloud2& cloud,
                 std::shared_ptr<const visfeat::SurfaceMesh>& mesh_out,
+                Eigen::Vector3d& offset,
                 std::string& summary,
                 std::string& error)
 {
@@ -346,6 +349,17 @@ loadMeshAsCloud(const std::string& path,
     return false;
   try {
     visfeat::validateMesh(mesh);
+    // survey coordinates: the mesh is recentred in double before anything is a float
+    Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::max());
+    Eigen::Vector3d hi = -lo;
+    for (const Eigen::Vector3d& v : mesh.vertices) {
+      lo = lo.cwiseMin(v);
+      hi = hi.cwiseMax(v);
+    }
+    offset = recentringOffset(lo, hi);
+    if (!offset.isZero())
+      for (Eigen::Vector3d& v : mesh.vertices)
+        v -= offset;
     if (mesh.triangles.empty())
       throw visfeat::Error("the mesh has no faces");
     const double area = visfeat::meshArea(mesh);
@@ -359,14 +373,21 @@ loadMeshAsCloud(const std::string& path,
         : density.points;
     const std::vector<visfeat::MeshSample> samples =
       visfeat::sampleMesh(mesh, count, kMeshSeed);
-    pcl::PointCloud<pcl::PointXYZ> xyz;
-    xyz.resize(samples.size());
-    for (std::size_t i = 0; i < samples.size(); ++i)
-      xyz[i].getVector3fMap() = samples[i].position;
-    xyz.width = static_cast<std::uint32_t>(xyz.size());
-    xyz.height = 1;
-    xyz.is_dense = true;
-    pcl::toPCLPointCloud2(xyz, cloud);
+    if (offset.isZero()) {
+      pcl::PointCloud<pcl::PointXYZ> xyz;
+      xyz.resize(samples.size());
+      for (std::size_t i = 0; i < samples.size(); ++i)
+        xyz[i].getVector3fMap() = samples[i].position;
+      xyz.width = static_cast<std::uint32_t>(xyz.size());
+      xyz.height = 1;
+      xyz.is_dense = true;
+      pcl::toPCLPointCloud2(xyz, cloud);
+    } else {
+      std::vector<Eigen::Vector3d> positions(samples.size());
+      for (std::size_t i = 0; i < samples.size(); ++i)
+        positions[i] = samples[i].position.cast<double>();
+      cloud = doubleXYZCloud(positions, offset);
+    }
     std::ostringstream s;
     s << "Sampled " << samples.size() << " points from " << mesh.triangles.size()
       << " triangles (" << mesh.vertices.size() << " vertices, area " << area;

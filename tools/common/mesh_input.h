@@ -65,11 +65,19 @@ bool loadMesh(const std::string& path, visfeat::SurfaceMesh& mesh, std::string& 
 
 /** \brief Load a mesh and sample it (area-weighted, seed kMeshSeed) into an x y z
  * cloud, keeping the mesh (for the band: VisibilityFeatureEstimation::setInputMesh).
- * `summary` says what was done, for the tool to print. */
+ * `summary` says what was done, for the tool to print.
+ *
+ * Survey coordinates: `offset` is recentringOffset() of the vertices' bounding box
+ * (zero near the origin). The kept mesh is the recentred one (vertices minus offset,
+ * in double) and is sampled there, so the float samples keep their precision; the
+ * cloud holds the samples in the input's frame (samples plus offset, FLOAT64 x y z
+ * when the offset is not zero, FLOAT32 otherwise): the tool subtracts the same offset
+ * (toXYZ) and gets the recentred samples back, on the recentred mesh. */
 bool loadMeshAsCloud(const std::string& path,
                      const MeshDensity& density,
                      pcl::PCLPointCloud2& cloud,
                      std::shared_ptr<const visfeat::SurfaceMesh>& mesh,
+                     Eigen::Vector3d& offset,
                      std::string& summary,
                      std::string& error);
 

@@ -9,8 +9,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <string>
 #include <utility>
@@ -244,9 +247,11 @@ TEST_F(MeshInput, SamplesAMeshIntoACloud)
   pcl::PCLPointCloud2 cloud;
   std::shared_ptr<const visfeat::SurfaceMesh> mesh;
   std::string summary, error;
+  Eigen::Vector3d offset;
   ASSERT_TRUE(vt::loadMeshAsCloud(write("t.off", kTetrahedronOff), density, cloud, mesh,
-                                  summary, error))
+                                  offset, summary, error))
     << error;
+  EXPECT_EQ(offset, Eigen::Vector3d::Zero()) << "near the origin: not recentred";
   EXPECT_EQ(cloud.width * cloud.height, 1000u);
   // the mesh itself is kept for the band
   ASSERT_TRUE(mesh);
@@ -261,8 +266,72 @@ TEST_F(MeshInput, SamplesAMeshIntoACloud)
 
   // The same mesh gives the same cloud.
   pcl::PCLPointCloud2 again;
-  ASSERT_TRUE(vt::loadMeshAsCloud(path("t.off"), density, again, mesh, summary, error));
+  ASSERT_TRUE(
+    vt::loadMeshAsCloud(path("t.off"), density, again, mesh, offset, summary, error));
   EXPECT_EQ(again.data, cloud.data);
+}
+
+/** An OFF file of kTetrahedronOff's tetrahedron, scaled by 9 and moved by `shift`,
+ * vertices printed to 17 digits. */
+std::string
+tetrahedronOffAt(const Eigen::Vector3d& shift)
+{
+  const Eigen::Vector3d v[4] = {Eigen::Vector3d::Zero(), 9.0 * Eigen::Vector3d::UnitX(),
+                                9.0 * Eigen::Vector3d::UnitY(),
+                                9.0 * Eigen::Vector3d::UnitZ()};
+  std::string text = "OFF\n4 4 0\n";
+  char line[128];
+  for (const Eigen::Vector3d& p : v) {
+    const Eigen::Vector3d q = p + shift;
+    std::snprintf(line, sizeof(line), "%.17g %.17g %.17g\n", q.x(), q.y(), q.z());
+    text += line;
+  }
+  return text + "3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n";
+}
+
+TEST_F(MeshInput, AMeshInSurveyCoordinatesIsRecentredBeforeSampling)
+{
+  // the tetrahedron near (512345.678, 4312345.123, 120.456): float there resolves
+  // 0.25-0.5 m; recentred, the samples keep micrometres
+  const Eigen::Vector3d survey(512345.678, 4312345.123, 120.456);
+  vt::MeshDensity density;
+  density.points = 2000;
+  pcl::PCLPointCloud2 cloud;
+  std::shared_ptr<const visfeat::SurfaceMesh> mesh;
+  Eigen::Vector3d offset;
+  std::string summary, error;
+  ASSERT_TRUE(vt::loadMeshAsCloud(write("far.off", tetrahedronOffAt(survey)), density,
+                                  cloud, mesh, offset, summary, error))
+    << error;
+  // the bounding box's centre rounded to tens (extent 9)
+  EXPECT_EQ(offset, Eigen::Vector3d(512350.0, 4312350.0, 120.0));
+  ASSERT_TRUE(mesh);
+  EXPECT_LT(
+    (mesh->vertices[1] - (survey + 9.0 * Eigen::Vector3d::UnitX() - offset)).norm(),
+    1e-9);
+  // the cloud is in the input's frame, in double
+  for (const pcl::PCLPointField& f : cloud.fields)
+    EXPECT_EQ(f.datatype, pcl::PCLPointField::FLOAT64) << f.name;
+  // the same samples as the mesh already at its recentred place, moved by the offset
+  pcl::PCLPointCloud2 near;
+  std::shared_ptr<const visfeat::SurfaceMesh> near_mesh;
+  Eigen::Vector3d near_offset;
+  ASSERT_TRUE(vt::loadMeshAsCloud(write("near.off", tetrahedronOffAt(survey - offset)),
+                                  density, near, near_mesh, near_offset, summary,
+                                  error))
+    << error;
+  EXPECT_EQ(near_offset, Eigen::Vector3d::Zero());
+  ASSERT_EQ(cloud.width, near.width);
+  double worst = 0.0;
+  for (std::size_t i = 0; i < cloud.width; ++i) {
+    double far_p[3];
+    float near_p[3];
+    std::memcpy(far_p, cloud.data.data() + i * cloud.point_step, sizeof(far_p));
+    std::memcpy(near_p, near.data.data() + i * near.point_step, sizeof(near_p));
+    for (int a = 0; a < 3; ++a)
+      worst = std::max(worst, std::abs(far_p[a] - (double(near_p[a]) + offset[a])));
+  }
+  EXPECT_LT(worst, 1e-5) << "world units";
 }
 
 TEST_F(MeshInput, RefusesMeshesWithoutArea)
@@ -273,11 +342,12 @@ TEST_F(MeshInput, RefusesMeshesWithoutArea)
   std::shared_ptr<const visfeat::SurfaceMesh> mesh;
   std::string summary, error;
   const std::string none = write("none.off", "OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n");
-  EXPECT_FALSE(vt::loadMeshAsCloud(none, density, cloud, mesh, summary, error));
+  Eigen::Vector3d offset;
+  EXPECT_FALSE(vt::loadMeshAsCloud(none, density, cloud, mesh, offset, summary, error));
   EXPECT_EQ(error, "'" + none + "': the mesh has no faces");
   const std::string flat =
     write("flat.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n2 0 0\n3 0 1 2\n");
-  EXPECT_FALSE(vt::loadMeshAsCloud(flat, density, cloud, mesh, summary, error));
+  EXPECT_FALSE(vt::loadMeshAsCloud(flat, density, cloud, mesh, offset, summary, error));
   EXPECT_FALSE(mesh);
   EXPECT_EQ(error, "'" + flat +
                      "': the mesh has zero area (all 1 triangles are "
