@@ -162,6 +162,78 @@ TEST(CadModels, EulerCharacteristic)
   }
 }
 
+TEST(CadModels, SmallFeatureModelsTruthAndFeatureSizes)
+{
+  // issue 14's models with features closer than 2 min_radius cells at 256
+  const std::map<std::string, Counts> expected{
+    {"stepped_block", {16, 24, 0, 10}},
+    {"chamfered_box", {16, 24, 0, 10}},
+    {"thin_plate_with_hole", {8, 12, 2, 7}},
+    {"parallel_creases", {14, 21, 0, 9}},
+  };
+  ASSERT_EQ(syn::smallFeatureModelNames().size(), expected.size());
+  for (const std::string& name : syn::smallFeatureModelNames()) {
+    SCOPED_TRACE(name);
+    ASSERT_EQ(expected.count(name), 1u);
+    const syn::CadModel model = syn::cadModelByName(name);
+    EXPECT_NO_THROW(syn::checkCadModel(model));
+    EXPECT_EQ(model.vertices.size(), expected.at(name).vertices);
+    EXPECT_EQ(countCurves(model, syn::CadCurve::Kind::kSegment),
+              expected.at(name).segments);
+    EXPECT_EQ(countCurves(model, syn::CadCurve::Kind::kCircle),
+              expected.at(name).circles);
+    EXPECT_EQ(model.faces.size(), expected.at(name).faces);
+    EXPECT_EQ(syn::eulerCharacteristic(model), isPolyhedron(model) ? 2 : 0);
+    EXPECT_LT(model.bounds().center().norm(), 1e-12);
+  }
+  // feature sizes in cells of 256 along the 2-unit side (the unrotated models)
+  const double cell = 2.0 / 256.0;
+  const syn::CadModel chamfered = syn::cadModelByName("chamfered_box");
+  EXPECT_NEAR(chamfered.bounds().sizes().maxCoeff(), 2.0, 1e-12);
+  std::multiset<long> widths; // chamfer faces: the sides of the octagon along z
+  for (const syn::CadFace& f : chamfered.faces)
+    if (std::abs(f.normal.z()) < 1e-9 && std::abs(f.normal.x()) > 1e-9 &&
+        std::abs(f.normal.y()) > 1e-9) {
+      // the face's width: its polygon's extent across z
+      double w = 0.0;
+      for (int a : f.polygon)
+        for (int b : f.polygon) {
+          Eigen::Vector3d d = chamfered.vertices[static_cast<std::size_t>(a)] -
+                              chamfered.vertices[static_cast<std::size_t>(b)];
+          d.z() = 0.0;
+          w = std::max(w, d.norm());
+        }
+      widths.insert(std::lround(w / cell));
+    }
+  EXPECT_EQ(widths, (std::multiset<long>{6, 10, 14, 20}));
+
+  const syn::CadModel plate = syn::cadModelByName("thin_plate_with_hole");
+  EXPECT_NEAR(plate.bounds().sizes().z() / cell, 12.0, 1e-9);
+  EXPECT_NEAR(plate.bounds().sizes().maxCoeff(), 2.0, 1e-12);
+
+  // three creases along z, 10 cells apart, turning by 30, 60 and 30 degrees
+  const syn::CadModel creases = syn::cadModelByName("parallel_creases");
+  std::vector<std::pair<double, double>> top; // (x, turn in degrees)
+  for (const syn::CadCurve& c : creases.curves) {
+    const Eigen::Vector3d a = creases.vertices[static_cast<std::size_t>(c.vertices[0])];
+    const Eigen::Vector3d b = creases.vertices[static_cast<std::size_t>(c.vertices[1])];
+    const Eigen::Vector3d& n0 =
+      creases.faces[static_cast<std::size_t>(c.faces[0])].normal;
+    const Eigen::Vector3d& n1 =
+      creases.faces[static_cast<std::size_t>(c.faces[1])].normal;
+    const double turn = std::acos(std::clamp(n0.dot(n1), -1.0, 1.0)) * 180.0 / kPi;
+    if (std::abs(a.z() - b.z()) > 0.5 && turn < 89.0) // along z, not a box edge
+      top.emplace_back(a.x(), turn);
+  }
+  std::sort(top.begin(), top.end());
+  ASSERT_EQ(top.size(), 3u);
+  EXPECT_NEAR((top[1].first - top[0].first) / cell, 10.0, 1e-9);
+  EXPECT_NEAR((top[2].first - top[1].first) / cell, 10.0, 1e-9);
+  EXPECT_NEAR(top[0].second, 30.0, 1e-9);
+  EXPECT_NEAR(top[1].second, 60.0, 1e-9);
+  EXPECT_NEAR(top[2].second, 30.0, 1e-9);
+}
+
 TEST(CadModels, Incidences)
 {
   for (const std::string& name : syn::cadModelNames()) {

@@ -54,13 +54,14 @@ prismModel(const std::string& name, const std::vector<Point2>& profile, double d
   return polyhedralModel(name, extrudedProfile(profile, depth));
 }
 
+/** A box of width x height x depth with a through-hole of `radius` along z (the
+ * extrusion), at the centre of the width x height faces. */
 CadModel
-boxWithHole()
+boxWithHole(
+  const std::string& name, double width, double height, double depth, double radius)
 {
-  const double side = 2.0, depth = 1.5, radius = 0.5;
   CadModel model = polyhedralModel(
-    "box_with_hole",
-    extrudedProfile({{0, 0}, {side, 0}, {side, side}, {0, side}}, depth));
+    name, extrudedProfile({{0, 0}, {width, 0}, {width, height}, {0, height}}, depth));
   // Faces 0 (bottom, z = -depth/2) and 1 (top) get the hole.
   const int wall = static_cast<int>(model.faces.size());
   for (int end = 0; end < 2; ++end) {
@@ -119,6 +120,52 @@ cylinder()
   return model;
 }
 
+/** The cell of a grid of 256 cells along 2 units, the longest side of the unrotated
+ * small-feature models: their feature sizes are set in these cells. */
+constexpr double kSmallFeatureCell = 2.0 / 256.0;
+
+/** A 2 x 1.5 x 1 box whose four edges along z are chamfered at 45 degrees, the
+ * chamfer faces 6, 10, 14 and 20 cells wide at 256 (an octagonal prism). */
+CadModel
+chamferedBox()
+{
+  const double w = 2.0, h = 1.5;
+  double leg[4];
+  const double widths[4] = {6.0, 10.0, 14.0, 20.0};
+  for (int i = 0; i < 4; ++i)
+    leg[i] = widths[i] * kSmallFeatureCell / std::sqrt(2.0);
+  return prismModel("chamfered_box",
+                    {{leg[0], 0},
+                     {w - leg[1], 0},
+                     {w, leg[1]},
+                     {w, h - leg[2]},
+                     {w - leg[2], h},
+                     {leg[3], h},
+                     {0, h - leg[3]},
+                     {0, leg[0]}},
+                    1.0);
+}
+
+/** A 2 x 0.6 x 1 block whose top carries three parallel creases 10 cells apart at 256
+ * (turns of 30, 60 and 30 degrees: flat, up 30 degrees, down 30 degrees, flat),
+ * extruded along z. */
+CadModel
+parallelCreases()
+{
+  const double length = 2.0, height = 0.6, first = 0.9;
+  const double d = 10.0 * kSmallFeatureCell;
+  const double rise = d * std::tan(30.0 * 3.14159265358979323846 / 180.0);
+  return prismModel("parallel_creases",
+                    {{0, 0},
+                     {length, 0},
+                     {length, height},
+                     {first + 2 * d, height},
+                     {first + d, height + rise},
+                     {first, height},
+                     {0, height}},
+                    1.0);
+}
+
 std::string
 knownModels()
 {
@@ -140,7 +187,7 @@ cadModelNames()
 std::vector<std::string>
 smallFeatureModelNames()
 {
-  return {"stepped_block"};
+  return {"stepped_block", "chamfered_box", "thin_plate_with_hole", "parallel_creases"};
 }
 
 std::vector<std::string>
@@ -163,7 +210,7 @@ cadModelByName(const std::string& name)
     return prismModel(
       name, {{0, 0}, {3, 0}, {3, 3}, {2, 3}, {2, 1}, {1, 1}, {1, 3}, {0, 3}}, 1.5);
   if (name == "box_with_hole")
-    return boxWithHole();
+    return boxWithHole(name, 2.0, 2.0, 1.5, 0.5);
   if (name == "cylinder")
     return cylinder();
   if (name == "stepped_block")
@@ -177,6 +224,12 @@ cadModelByName(const std::string& name)
                        {0.6, 0.45},
                        {0, 0.45}},
                       1.2);
+  if (name == "chamfered_box")
+    return chamferedBox();
+  if (name == "thin_plate_with_hole")
+    return boxWithHole(name, 2.0, 1.5, kSmallFeatureCell * 12.0, 0.3);
+  if (name == "parallel_creases")
+    return parallelCreases();
   throw Error("unknown CAD model '" + name + "' (known: " + knownModels() + ")");
 }
 

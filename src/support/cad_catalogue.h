@@ -18,7 +18,14 @@ std::vector<std::string> cadModelNames();
 /** \brief Models with features closer than 2 min_radius cells at 256 (the small
  * features of real machined parts), also accepted by cadModelByName():
  * "stepped_block" 16/24/10 (a staircase of three treads 0.6 deep, risers 0.15 high,
- * extruded by 1.2: at 256 cells along its 1.8 length a riser is 21 cells high). */
+ * extruded by 1.2: at 256 cells along its 1.8 length a riser is 21 cells high);
+ * "chamfered_box" 16/24/10 (a 2 x 1.5 x 1 box, its four edges along z chamfered at 45
+ * degrees, chamfer faces 6, 10, 14 and 20 cells wide at 256 along its 2-unit side);
+ * "thin_plate_with_hole" 8/14/7 (a 2 x 1.5 plate 12 cells thick at 256, a hole of
+ * radius 0.3 through its middle); "parallel_creases" 14/21/9 (a 2 x 0.6 block, 1 deep,
+ * whose top turns by 30, 60 and 30 degrees at three parallel creases 10 cells apart at
+ * 256). Unrotated: a random rotation lengthens the bounding box, so at 256 the cells
+ * grow by up to sqrt(3) and the features shrink in cells. */
 std::vector<std::string> smallFeatureModelNames();
 
 /** \brief cadModelNames() then smallFeatureModelNames(). */
