@@ -13,6 +13,8 @@
 #include <cmath>
 #include <iostream>
 #include <random>
+#include <sstream>
+#include <string>
 #include <vector>
 
 namespace {
@@ -252,6 +254,28 @@ TEST(CreaseAngles, MergeRuleOnASheet)
   EXPECT_EQ(
     visfeat::shallowCreaseMerge(graph, sheetAngles(90, 90, NAN), {contact}, 20.0),
     kept);
+}
+
+TEST(CreaseAngles, WrittenInTheGraphJsonForEdges)
+{
+  visfeat::TopologyGraph graph = sheetGraph();
+  graph.setCreaseAngle(2, 33.5);
+  EXPECT_EQ(graph.node(2).crease_angle, 33.5);
+  EXPECT_TRUE(std::isnan(graph.node(5).crease_angle));
+  EXPECT_THROW(graph.setCreaseAngle(8, 1.0), visfeat::Error);
+  std::ostringstream out;
+  graph.writeJson(out, {});
+  const std::string json = out.str();
+  // three edges: one measured, two null; no other node has the field
+  EXPECT_NE(json.find("\"crease_angle\": 33.5"), std::string::npos) << json;
+  std::size_t fields = 0, nulls = 0;
+  for (std::size_t at = json.find("crease_angle"); at != std::string::npos;
+       at = json.find("crease_angle", at + 1)) {
+    ++fields;
+    nulls += json.compare(at, 19, "crease_angle\": null") == 0;
+  }
+  EXPECT_EQ(fields, 3u);
+  EXPECT_EQ(nulls, 2u);
 }
 
 TEST(CreaseAngles, ParametersValidate)
