@@ -23,28 +23,15 @@ namespace visfeat_tools {
 const std::set<std::string>&
 valueOptions()
 {
-  static const std::set<std::string> names{"-resolution",
-                                           "-max_radius",
-                                           "-min_radius",
-                                           "-vertex_cells",
-                                           "-dimensionality",
-                                           "-opacity",
-                                           "-smooth",
-                                           "-threads",
-                                           "-memory_limit_mb",
-                                           "-voxels",
-                                           "-graph",
-                                           "-mesh_points",
-                                           "-mesh_spacing",
-                                           "-png",
-                                           "-png_radius",
-                                           "-png_size",
-                                           "-fill",
-                                           "-fill_neighbours",
-                                           "-fill_gap",
-                                           "-fill_edge",
-                                           "-fill_inset",
-                                           "-fill_votes"};
+  static const std::set<std::string> names{
+    "-resolution",      "-max_radius",     "-min_radius",
+    "-vertex_cells",    "-dimensionality", "-min_crease_angle",
+    "-opacity",         "-smooth",         "-threads",
+    "-memory_limit_mb", "-voxels",         "-graph",
+    "-mesh_points",     "-mesh_spacing",   "-png",
+    "-png_radius",      "-png_size",       "-fill",
+    "-fill_neighbours", "-fill_gap",       "-fill_edge",
+    "-fill_inset",      "-fill_votes"};
   return names;
 }
 
@@ -105,6 +92,14 @@ printHelp(const char* program)
              "6-neighbours < D (default: ");
   print_value("%g", kDefaultDimensionality);
   print_info(")\n");
+  print_info("    -min_crease_angle A = an edge whose sides, fitted by planes "
+             "within %g cells, turn by less than A degrees is a blend or a shallow "
+             "facet, not a crease: it joins its faces (default: ",
+             visfeat::CreaseAngleParameters::kDefaultWindowCells);
+  print_value("%g", visfeat::CreaseAngleParameters::kDefaultMinCreaseAngle);
+  print_info(" degrees; %g-%g, 0 = off)\n",
+             visfeat::CreaseAngleParameters::kMinCreaseAngleRange.min,
+             visfeat::CreaseAngleParameters::kMinCreaseAngleRange.max);
   print_info("    -raw              = the paper's literal components (no regions, no "
              "clean-up)\n");
   print_info("    -no_regions       = label the components' cores only, not every "
@@ -203,6 +198,8 @@ readValues(const Arguments& args, Options& opt, std::string& error)
       !integer("-min_radius", Components::kMinRadiusRange, opt.min_radius) ||
       !integer("-vertex_cells", Components::kVertexMaxCellsRange, opt.vertex_cells) ||
       !real("-dimensionality", Components::kDimensionalityRange, opt.dimensionality) ||
+      !real("-min_crease_angle", visfeat::CreaseAngleParameters::kMinCreaseAngleRange,
+            opt.min_crease_angle) ||
       !real("-opacity", Visibility::kOpacityRange, opt.opacity) ||
       !real("-smooth", visfeat::SmoothingParameters::kRadiusRange, opt.smooth) ||
       !integer("-threads", Visibility::kThreadsRange, opt.threads) ||

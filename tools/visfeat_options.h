@@ -8,6 +8,7 @@
 #include "picture/picture_requests.h"
 
 #include <visfeat/core/common/parameters.h>
+#include <visfeat/core/graph/crease_angles.h>
 #include <visfeat/core/segmentation/components.h>
 #include <visfeat/core/visibility/visibility_map.h>
 #include <visfeat/surface_fill.h>
@@ -38,6 +39,7 @@ struct Options
   int max_radius = 0; // 0 = min_radius (the estimator's automatic cap)
   int vertex_cells = kDefaultVertexCells;
   double dimensionality = kDefaultDimensionality;
+  double min_crease_angle = visfeat::CreaseAngleParameters::kDefaultMinCreaseAngle;
   bool raw = false;
   bool regions = true;
   double opacity = kDefaultOpacity;

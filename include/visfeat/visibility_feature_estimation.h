@@ -2,6 +2,7 @@
 
 #include <visfeat/core/band/point_smoothing.h>
 #include <visfeat/core/band/voxel_band.h>
+#include <visfeat/core/graph/crease_angles.h>
 #include <visfeat/core/graph/topology_graph.h>
 #include <visfeat/core/grid/cloud_shape.h>
 #include <visfeat/core/grid/resolution.h>
@@ -231,6 +232,22 @@ public:
                        : SegmentationParameters{}.point_feature_distance;
   }
 
+  /** \brief Sharp versus smooth: an edge whose two sides, fitted by planes within
+   * CreaseAngleParameters::window_cells of it, turn by less than this many degrees is
+   * a blend or a shallow facet, not a crease: its points join its sides, which become
+   * one face, and corners that no longer end two different creases stop being
+   * vertices (shallowCreaseMerge()). Each edge's measured turn is in the graph
+   * (GraphNode::crease_angle). Default CreaseAngleParameters::kDefaultMinCreaseAngle
+   * (20 degrees, as CGAL's detect_sharp_edges), 0 = off; range
+   * CreaseAngleParameters::kMinCreaseAngleRange ([0, 180] degrees). Applies to complete
+   * regions (the default segmentation); raw components are neither measured nor
+   * merged. */
+  inline void setMinCreaseAngle(double degrees)
+  {
+    crease_angles_.min_crease_angle = degrees;
+  }
+  inline double getMinCreaseAngle() const { return crease_angles_.min_crease_angle; }
+
   /** \brief Smoothing radius in cells: before the band is built, every point is
    * projected onto the least-squares plane of its neighbours within this radius
    * (smoothPoints()); creases are rounded within it. Default 0 = off, or
@@ -409,6 +426,7 @@ private:
     SmoothingParameters smoothing;
     SegmentationParameters segmentation;
     TopologyGraphParameters graph;
+    CreaseAngleParameters crease_angles;
     GridSpec grid;
     ResolutionEstimate resolution;
     SurfaceFill fill = SurfaceFill::kPoints;
@@ -453,6 +471,8 @@ private:
                    const PointCloudIn& surface,
                    PointCloudOut& output) const;
   void buildGraph(Results& results, const Run& run, const PointCloudOut& output) const;
+  void
+  mergeShallowCreases(Results& results, const Run& run, PointCloudOut& output) const;
 
   bool fail(const std::string& message);
 
@@ -466,6 +486,7 @@ private:
   std::optional<double> point_feature_distance_;
   VoxelBand::Options band_options_;
   SegmentationParameters segmentation_parameters_;
+  CreaseAngleParameters crease_angles_;
   std::uint64_t memory_limit_ = 0;
   ProgressCallback progress_;
   int graph_dilation_ = -1;

@@ -106,6 +106,8 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::prepare() const
   VisibilityMap::validate(run.visibility);
   run.segmentation = getSegmentationParameters();
   run.segmentation.validate(run.visibility.max_radius);
+  run.crease_angles = crease_angles_;
+  run.crease_angles.validate();
   run.smoothing.radius = getSmoothingRadius();
   run.smoothing.threads = threads_;
   run.smoothing.validate();
@@ -290,6 +292,57 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::buildGraph(
 }
 
 template <typename PointInT, typename PointOutT>
+void
+VisibilityFeatureEstimation<PointInT, PointOutT>::mergeShallowCreases(
+  Results& results, const Run& run, PointCloudOut& output) const
+{
+  if (run.segmentation.raw || !run.segmentation.complete_regions)
+    return;
+  std::vector<Eigen::Vector3d> points(output.size());
+  std::vector<std::uint32_t> labels(output.size());
+  for (std::size_t i = 0; i < output.size(); ++i) {
+    points[i] = output[i].getVector3fMap().template cast<double>();
+    labels[i] = output[i].label;
+  }
+  const auto measure = [&]() {
+    std::vector<FeatureClass> classes;
+    for (const Region& region : results.segmentation.regions())
+      classes.push_back(region.feature_class);
+    return measureCreaseAngles(points, labels, classes, results.band.grid().cell_size,
+                               run.crease_angles.window_cells);
+  };
+  std::vector<CreaseAngle> angles = measure();
+  std::vector<FeatureClass> classes;
+  for (const Region& region : results.segmentation.regions())
+    classes.push_back(region.feature_class);
+  const std::vector<CreaseAngle> contacts =
+    measureFaceContacts(results.band, results.segmentation.cellLabels(), points, labels,
+                        classes, run.crease_angles.window_cells);
+  const std::vector<std::uint32_t> into = shallowCreaseMerge(
+    results.graph, angles, contacts, run.crease_angles.min_crease_angle);
+  bool merged = false;
+  for (std::size_t l = 1; l < into.size(); ++l)
+    merged = merged || into[l] != l;
+  if (merged) { // relabel cells and points, then the graph and the angles again
+    const std::vector<std::uint32_t> renumbered =
+      results.segmentation.mergeRegions(into);
+    const std::vector<Region>& regions = results.segmentation.regions();
+    for (std::size_t i = 0; i < output.size(); ++i) {
+      const std::uint32_t label = renumbered[output[i].label];
+      output[i].label = labels[i] = label;
+      output[i].feature_class = static_cast<std::uint8_t>(
+        label == 0 ? FeatureClass::kNone : regions[label - 1].feature_class);
+    }
+    buildGraph(results, run, output);
+    angles = measure();
+  }
+  for (std::size_t r = 0; r < angles.size(); ++r)
+    if (std::isfinite(angles[r].degrees))
+      results.graph.setCreaseAngle(static_cast<std::uint32_t>(r + 1),
+                                   angles[r].degrees);
+}
+
+template <typename PointInT, typename PointOutT>
 typename VisibilityFeatureEstimation<PointInT, PointOutT>::Results
 VisibilityFeatureEstimation<PointInT, PointOutT>::computeResults(
   Run& run, PointCloudOut& output) const
@@ -340,6 +393,7 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::computeResults(
 
   start = Clock::now();
   buildGraph(results, run, output);
+  mergeShallowCreases(results, run, output);
   run.times.graph_ms = detail::millisecondsSince(start);
   checkResults(results, run);
   return results;

@@ -180,6 +180,11 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::chooseFill(Run& run) const
     run.segmentation.point_feature_distance =
       std::min(run.segmentation.point_feature_distance * spacing_cells,
                SegmentationParameters::kPointFeatureDistanceRange.max);
+  // Likewise the window of the crease angles holds as many points as on dense clouds.
+  if (run.fill != SurfaceFill::kPoints && spacing_cells > 1.0)
+    run.crease_angles.window_cells =
+      std::min(run.crease_angles.window_cells * spacing_cells,
+               CreaseAngleParameters::kWindowCellsRange.max);
 }
 
 template <typename PointInT, typename PointOutT>

@@ -539,6 +539,9 @@ TopologyGraph::writeJson(std::ostream& out, const GraphMetadata& meta) const
                      {"centroid", json_document::vector3(n.centroid + meta.offset)},
                      {"min", json_document::vector3(n.min + meta.offset)},
                      {"max", json_document::vector3(n.max + meta.offset)}});
+    if (n.feature_class == FeatureClass::kEdge)
+      nodes.back()["crease_angle"] =
+        std::isfinite(n.crease_angle) ? json(n.crease_angle) : json(nullptr);
   }
   json all_arcs = json::array();
   for (const auto& [a, b] : arcs())

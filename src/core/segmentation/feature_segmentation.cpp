@@ -6,6 +6,9 @@
 #include <visfeat/core/common/error.h>
 #include <visfeat/core/segmentation/feature_segmentation.h>
 
+#include <limits>
+#include <string>
+
 namespace visfeat {
 namespace segmentation {
 
@@ -109,6 +112,42 @@ FeatureSegmentation::compute(const VoxelBand& band,
   result.regions_ = numberRegions(state.labels, state.cls, state.core_of);
   result.labels_ = std::move(state.labels);
   return result;
+}
+
+std::vector<std::uint32_t>
+FeatureSegmentation::mergeRegions(const std::vector<std::uint32_t>& into)
+{
+  const std::size_t n = regions_.size();
+  if (into.size() != n + 1)
+    throw Error("mergeRegions: " + std::to_string(into.size()) + " entries for " +
+                std::to_string(n) + " regions (one per label and index 0)");
+  std::vector<FeatureClass> classes(n + 1, FeatureClass::kNone);
+  for (std::size_t l = 1; l <= n; ++l) {
+    if (into[l] == 0 || into[l] > n || into[into[l]] != into[l])
+      throw Error("mergeRegions: region " + std::to_string(l) + " joins " +
+                  std::to_string(into[l]) + ", not a kept region");
+    classes[l] = regions_[into[l] - 1].feature_class;
+  }
+  std::vector<std::uint32_t> renumbered(n + 1, 0);
+  for (std::size_t c = 0; c < labels_.size(); ++c) {
+    std::uint32_t& label = labels_[c];
+    if (label == 0)
+      continue;
+    label = into[label];
+    if (classes[label] == FeatureClass::kFace && !skeleton_.empty() && skeleton_[c]) {
+      skeleton_[c] = 0;
+      skeleton_centres_[c] =
+        Eigen::Vector3f::Constant(std::numeric_limits<float>::quiet_NaN());
+      skeleton_tangents_[c] = Eigen::Vector3f::Zero();
+    }
+  }
+  const std::vector<std::uint32_t> old_labels = labels_;
+  regions_ = numberRegions(labels_, classes, cores_.cellLabels());
+  for (std::size_t c = 0; c < labels_.size(); ++c)
+    renumbered[old_labels[c]] = labels_[c];
+  for (std::size_t l = 1; l <= n; ++l)
+    renumbered[l] = renumbered[into[l]];
+  return renumbered;
 }
 
 } // namespace visfeat

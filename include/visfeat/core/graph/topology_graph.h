@@ -11,6 +11,7 @@
 
 #include <cstdint>
 #include <iosfwd>
+#include <limits>
 #include <string>
 #include <utility>
 #include <vector>
@@ -36,6 +37,10 @@ struct GraphNode
   Eigen::Vector3d centroid{0.0, 0.0, 0.0};
   Eigen::Vector3d min{0.0, 0.0, 0.0};
   Eigen::Vector3d max{0.0, 0.0, 0.0};
+  /** \brief Edges: the turn between the planes fitted to its two sides, degrees (0 =
+   * flat, 90 = a right-angle crease; measureCreaseAngles()); NaN where not measured
+   * and for vertices and faces. Set by setCreaseAngle(). */
+  double crease_angle = std::numeric_limits<double>::quiet_NaN();
 };
 
 /** \brief Parameters of TopologyGraph::build. */
@@ -162,6 +167,14 @@ public:
                         const Eigen::Vector3d& min,
                         const Eigen::Vector3d& max);
 
+  /** \brief Set GraphNode::crease_angle of node id (degrees). \throws visfeat::Error
+   * for an unknown id. */
+  void setCreaseAngle(std::uint32_t id, double degrees)
+  {
+    checkedNode(id, "setCreaseAngle");
+    graph_[id - 1].crease_angle = degrees;
+  }
+
   /** \brief The Boost graph: vertex index = id - 1, bundled property GraphNode. */
   const Graph& graph() const { return graph_; }
 
@@ -213,9 +226,9 @@ public:
   void writeDot(std::ostream& out) const;
 
   /** \brief JSON (format "visfeat-topology-graph", version 1): source, grid,
-   * parameters, counts, nodes (id, class, cells, points, centroid, min, max) and
-   * arcs [[a, b], ...] with a < b. Doubles round-trip exactly; NaN and infinities are
-   * written as null. */
+   * parameters, counts, nodes (id, class, cells, points, centroid, min, max;
+   * edges also crease_angle, null where not measured) and arcs [[a, b], ...] with a <
+   * b. Doubles round-trip exactly; NaN and infinities are written as null. */
   void writeJson(std::ostream& out, const GraphMetadata& meta) const;
 
   /** \brief Write DOT (extension .dot or .gv) or JSON (.json), case-insensitive.

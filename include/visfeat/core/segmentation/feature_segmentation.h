@@ -169,6 +169,15 @@ public:
   /** \brief Regions of each class: [none, vertex, edge, face]. */
   std::array<std::size_t, 4> classCounts() const;
 
+  /** \brief Joins regions: region l's cells take region into[l]'s label and class
+   * (into has size regions().size() + 1, index 0 unused; into[l] = l keeps l, and
+   * into[into[l]] must be into[l]). Skeleton cells that end in a face leave the
+   * skeleton. Labels are then renumbered 1.. in the order of each region's smallest
+   * cell id, as compute() numbers them (e.g. CreaseAngleParameters' merge).
+   * \return per old label (index 0 unused, 0 -> 0), its new label.
+   * \throws visfeat::Error when into has the wrong size or a label out of range. */
+  std::vector<std::uint32_t> mergeRegions(const std::vector<std::uint32_t>& into);
+
 private:
   ComponentSet cores_;
   std::vector<std::uint32_t> labels_;

@@ -1,0 +1,156 @@
+#pragma once
+
+#include <visfeat/core/band/voxel_band.h>
+#include <visfeat/core/common/feature_class.h>
+#include <visfeat/core/common/parameters.h>
+#include <visfeat/core/graph/topology_graph.h>
+
+#include <Eigen/Core>
+
+#include <array>
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+namespace visfeat {
+
+/** \brief Sharp versus smooth: the turn measured across each edge region, and the
+ * smallest turn that is still a crease.
+ *
+ * The rule: a turn of less than min_crease_angle degrees between the planes fitted to
+ * the two sides of an edge, within window_cells cells of it, is a blend or a shallow
+ * facet, not a crease. The edge's points and cells join its sides, and the two faces
+ * become one. A fillet of radius r cells turns by about 2 d / r radians over the
+ * window, d (about 2.3 cells for the default window) being the mean distance of the
+ * fitted points from the edge's middle: with the defaults a fillet whose radius is
+ * above about 13 cells reads below 20 degrees and is a face.
+ */
+struct CreaseAngleParameters
+{
+  /** \brief Edges whose measured turn (0 = flat, 90 = a right-angle crease, degrees)
+   * is below this are not creases. Default kDefaultMinCreaseAngle (20, as CGAL's
+   * detect_sharp_edges); range kMinCreaseAngleRange ([0, 180] degrees); 0 = off
+   * (every edge the visibility map finds stays). Higher values also remove real
+   * shallow creases (the icosahedron's turn is 41.8 degrees); lower ones keep
+   * fillets and the facets of tessellated cylinders as edges and corners. */
+  double min_crease_angle = kDefaultMinCreaseAngle;
+  /** \brief Radius of the window, in cells, around each sample point of an edge: the
+   * face points within it on each side are fitted by a plane (least squares). Default
+   * kDefaultWindowCells; range kWindowCellsRange. Larger windows measure a curved
+   * side's mean bend (a fillet reads steeper) and reach the third face near corners
+   * more often; smaller ones hold too few points (kMinSidePoints) on sparse clouds. */
+  double window_cells = kDefaultWindowCells;
+
+  static constexpr double kDefaultMinCreaseAngle = 20.0;
+  /** \brief 4 cells: the face points start about 1 cell from an edge's middle
+   * (point_feature_distance), so each side keeps a half ring 1-4 cells wide (about
+   * 140 points at 6 points a cell squared), and a fillet of 19 cells (the generated
+   * filleted box at 256) reads about 14 degrees. */
+  static constexpr double kDefaultWindowCells = 4.0;
+  /** \brief Fewer face points than this on one side of a sample: no measure there. */
+  static constexpr std::size_t kMinSidePoints = 10;
+  /** \brief At most this many sample points per edge, spread evenly over its points
+   * (in index order); the edge's turn is the median over them. */
+  static constexpr std::size_t kMaxSamplesPerEdge = 48;
+  /** \brief Two faces that touch without an edge between them are measured only
+   * when at least this many samples along their contact measure them (a contact of a
+   * few cells near a corner is not a boundary). */
+  static constexpr std::size_t kMinContactSamples = 8;
+  /** \brief Contacts of faces are sampled only farther than this many cells from
+   * every edge and vertex point: near the ends of edge regions and around corners the
+   * watershed lets a face spill across a crease, where its points lie on the
+   * neighbouring surface and the turn reads shallow (measured on the filleted box:
+   * top-side contacts at its corners read 20-33 degrees). */
+  static constexpr double kContactClearanceCells = 8.0;
+
+  /** \brief [0, 180] degrees. */
+  static constexpr ParameterRange<double> kMinCreaseAngleRange{0.0, 180.0};
+  /** \brief [1, 64] cells. */
+  static constexpr ParameterRange<double> kWindowCellsRange{1.0, 64.0};
+
+  /** \brief Throws visfeat::Error naming the first parameter out of range. */
+  void validate() const;
+};
+
+/** \brief The measured turn of one edge region. */
+struct CreaseAngle
+{
+  /** \brief The median turn over the samples of the side pair `faces`, degrees
+   * (0 = flat, 90 = right angle, up to 180); NaN when no sample measured it. */
+  double degrees = std::numeric_limits<double>::quiet_NaN();
+  /** \brief The face labels on its two sides (smaller first): the pair most samples
+   * saw as their two main faces; {0, 0} when none. */
+  std::array<std::uint32_t, 2> faces{{0, 0}};
+  /** \brief Samples that measured that pair. */
+  std::uint32_t samples = 0;
+};
+
+/** \brief The turn between two sides of a crease, degrees, from their points near a
+ * point `at` on it: each side is fitted by its least-squares plane, and its
+ * direction away from the crease (its centroid minus `at`, in its plane, across the
+ * line where the planes meet); the turn is 180 degrees minus the angle between those
+ * directions (two halves of one plane: 0; a right-angle crease: 90). NaN when a side
+ * has fewer than 3 points or its direction vanishes. */
+double sideTurnDegrees(const std::vector<Eigen::Vector3d>& side_a,
+                       const std::vector<Eigen::Vector3d>& side_b,
+                       const Eigen::Vector3d& at);
+
+/** \brief Per region (index label - 1), the turn of each edge region (NaN for the
+ * other classes).
+ *
+ * \param[in] points the labelled points (world units)
+ * \param[in] labels per point, its region label (1..N, 0 = none)
+ * \param[in] classes per region, its class (classes[label - 1])
+ * \param[in] cell_size the grid's cell (world units)
+ * \param[in] window_cells see CreaseAngleParameters::window_cells
+ *
+ * Each edge's samples (up to kMaxSamplesPerEdge of its points) take the face points
+ * within the window; the two faces with most points there are the sample's sides
+ * (each needs kMinSidePoints), measured by sideTurnDegrees(). Deterministic. */
+std::vector<CreaseAngle> measureCreaseAngles(const std::vector<Eigen::Vector3d>& points,
+                                             const std::vector<std::uint32_t>& labels,
+                                             const std::vector<FeatureClass>& classes,
+                                             double cell_size,
+                                             double window_cells);
+
+/** \brief The turn where two face regions touch with no edge region between them
+ * (their cells are 6-neighbours): the watershed splits a smooth blend (a fillet, a
+ * tessellated cylinder) between faces without a crease core on it.
+ *
+ * Per pair of touching faces (a < b in `faces`), samples at up to kMaxSamplesPerEdge
+ * of the contact's cells farther than kContactClearanceCells from every edge and
+ * vertex point (their centres) measure the turn between the planes fitted to
+ * the two faces' points within the window (sideTurnDegrees(), kMinSidePoints a side);
+ * the median over at least kMinContactSamples samples, else the pair is left out.
+ * cell_labels: per band cell its region label; points, labels, classes and
+ * window_cells as measureCreaseAngles(). */
+std::vector<CreaseAngle>
+measureFaceContacts(const VoxelBand& band,
+                    const std::vector<std::uint32_t>& cell_labels,
+                    const std::vector<Eigen::Vector3d>& points,
+                    const std::vector<std::uint32_t>& labels,
+                    const std::vector<FeatureClass>& classes,
+                    double window_cells);
+
+/** \brief Which region each region joins under the rule, per label (index 0 unused):
+ * itself when kept.
+ *
+ * An edge measured below min_crease_angle (finite; min_crease_angle 0 keeps all)
+ * joins its two faces, which become one; so do two faces of `contacts`
+ * (measureFaceContacts()) measured below it, unless an edge kept (measured at or
+ * above it) separates the two (then the contact is the watershed spilling across that
+ * crease, as at the filleted box's corners, where the top touches the fillets). An
+ * edge that could not be measured and whose faces all merged into one joins it. A
+ * vertex joined in the graph to such an edge, or to an edge of a merged face, stops
+ * being a vertex unless its remaining edges separate at least two different pairs of
+ * (merged) faces: it then joins its remaining edges, which become one edge, or, with
+ * none left, its first face. Edges of merged faces that then separate the same two
+ * faces are one edge. Joined labels point at the kept region (the smallest face label
+ * for faces, the first remaining edge for edges). angles: per region (label - 1),
+ * measureCreaseAngles(). */
+std::vector<std::uint32_t> shallowCreaseMerge(const TopologyGraph& graph,
+                                              const std::vector<CreaseAngle>& angles,
+                                              const std::vector<CreaseAngle>& contacts,
+                                              double min_crease_angle);
+
+} // namespace visfeat

@@ -1,0 +1,556 @@
+// Sharp versus smooth (crease_angles.h): the turn across each edge region from planes
+// fitted to its two sides, and the merge of the edges that turn less than the minimum.
+
+#include <visfeat/core/graph/crease_angles.h>
+
+#include <visfeat/core/band/voxel_band.h>
+
+#include "../common/angles.h"
+
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+
+namespace visfeat {
+
+void
+CreaseAngleParameters::validate() const
+{
+  checkRange("min_crease_angle", min_crease_angle, kMinCreaseAngleRange, "degrees");
+  checkRange("crease_window", window_cells, kWindowCellsRange, "cells");
+}
+
+namespace {
+
+/** Points accumulated for a least-squares plane. */
+struct PlaneSums
+{
+  std::size_t count = 0;
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  Eigen::Matrix3d outer = Eigen::Matrix3d::Zero();
+
+  /** p relative to a nearby origin, so the sums stay well conditioned. */
+  void add(const Eigen::Vector3d& p)
+  {
+    ++count;
+    sum += p;
+    outer += p * p.transpose();
+  }
+  Eigen::Vector3d mean() const { return sum / double(count); }
+  /** The unit normal of the least-squares plane (smallest principal axis). */
+  Eigen::Vector3d normal() const
+  {
+    const Eigen::Vector3d m = mean();
+    const Eigen::Matrix3d covariance = outer / double(count) - m * m.transpose();
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(covariance);
+    return solver.eigenvectors().col(0);
+  }
+};
+
+/** The turn between two sides, degrees (sideTurnDegrees()); their sums are relative to
+ * the sample point. */
+double
+turnOfSides(const PlaneSums& a, const PlaneSums& b)
+{
+  if (a.count < 3 || b.count < 3)
+    return std::numeric_limits<double>::quiet_NaN();
+  const Eigen::Vector3d na = a.normal(), nb = b.normal();
+  Eigen::Vector3d ua = a.mean(), ub = b.mean(); // the sample point is the origin
+  ua -= ua.dot(na) * na;
+  ub -= ub.dot(nb) * nb;
+  // The line where the sides meet: where the planes cross; for nearly parallel
+  // planes (the cross product is then noise), across the way from one side to the
+  // other.
+  constexpr double kMinLineSine = 0.0175; // sin(1 degree)
+  Eigen::Vector3d line = na.cross(nb);
+  if (line.norm() <= kMinLineSine)
+    line = (na + (na.dot(nb) >= 0.0 ? 1.0 : -1.0) * nb).cross(ub - ua);
+  if (line.norm() > 0.0) { // keep only the directions across that line
+    const Eigen::Vector3d t = line.normalized();
+    ua -= ua.dot(t) * t;
+    ub -= ub.dot(t) * t;
+  }
+  const double la = ua.norm(), lb = ub.norm();
+  if (!(la > 0.0) || !(lb > 0.0))
+    return std::numeric_limits<double>::quiet_NaN();
+  const double cosine = std::clamp(ua.dot(ub) / (la * lb), -1.0, 1.0);
+  return 180.0 - std::acos(cosine) * 180.0 / detail::kPi;
+}
+
+/** Face points sorted by their bucket (a cube of the window's size) for neighbour
+ * queries: a point within the window of x lies in one of the 27 buckets around x's. */
+class FacePointIndex
+{
+public:
+  /** Indexes the points of face regions, or (faces false) of edge and vertex
+   * regions. */
+  FacePointIndex(const std::vector<Eigen::Vector3d>& points,
+                 const std::vector<std::uint32_t>& labels,
+                 const std::vector<FeatureClass>& classes,
+                 double bucket,
+                 bool faces = true)
+      : points_(points)
+      , bucket_(bucket)
+  {
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      const std::uint32_t l = labels[i];
+      if (l == 0 || l > classes.size() || !points[i].allFinite())
+        continue;
+      const FeatureClass cls = classes[l - 1];
+      const bool feature = cls == FeatureClass::kEdge || cls == FeatureClass::kVertex;
+      if (faces ? cls != FeatureClass::kFace : !feature)
+        continue;
+      entries_.push_back({key(cellOf(points[i])), static_cast<std::uint32_t>(i)});
+    }
+    std::sort(entries_.begin(), entries_.end());
+  }
+
+  /** Whether an indexed point lies within radius (at most the bucket) of x. */
+  bool anyWithin(const Eigen::Vector3d& x, double radius) const
+  {
+    bool found = false;
+    forEachWithin(x, radius, [&](std::uint32_t) { found = true; });
+    return found;
+  }
+
+  /** Calls f(i) for every indexed point i within radius of x. */
+  template <typename F>
+  void forEachWithin(const Eigen::Vector3d& x, double radius, F f) const
+  {
+    const Eigen::Vector3i c = cellOf(x);
+    for (int dz = -1; dz <= 1; ++dz)
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+          const std::int64_t k = key(c + Eigen::Vector3i(dx, dy, dz));
+          auto it = std::lower_bound(entries_.begin(), entries_.end(),
+                                     std::make_pair(k, std::uint32_t(0)));
+          for (; it != entries_.end() && it->first == k; ++it)
+            if ((points_[it->second] - x).squaredNorm() <= radius * radius)
+              f(it->second);
+        }
+  }
+
+private:
+  Eigen::Vector3i cellOf(const Eigen::Vector3d& p) const
+  {
+    return (p / bucket_).array().floor().cast<int>();
+  }
+  static std::int64_t key(const Eigen::Vector3i& c)
+  {
+    // 21 bits a coordinate: buckets are windows of >= 1 cell on grids of <= 8192
+    constexpr std::int64_t kBias = 1 << 20, kSpan = std::int64_t(1) << 21;
+    return ((c.z() + kBias) * kSpan + (c.y() + kBias)) * kSpan + (c.x() + kBias);
+  }
+
+  const std::vector<Eigen::Vector3d>& points_;
+  double bucket_;
+  std::vector<std::pair<std::int64_t, std::uint32_t>> entries_;
+};
+
+/** One sample's measure: its two main faces (smaller label first) and their turn. */
+struct SampleTurn
+{
+  std::array<std::uint32_t, 2> faces{{0, 0}};
+  double degrees = std::numeric_limits<double>::quiet_NaN();
+};
+
+/** The turn at `at` between the two faces with most points within radius. */
+SampleTurn
+measureSample(const FacePointIndex& index,
+              const std::vector<Eigen::Vector3d>& points,
+              const std::vector<std::uint32_t>& labels,
+              const Eigen::Vector3d& at,
+              double radius)
+{
+  std::map<std::uint32_t, PlaneSums> sides;
+  index.forEachWithin(at, radius,
+                      [&](std::uint32_t i) { sides[labels[i]].add(points[i] - at); });
+  // The two faces with most points (the smaller label first among equals).
+  std::uint32_t first = 0, second = 0;
+  std::size_t n_first = 0, n_second = 0;
+  for (const auto& [label, sums] : sides) {
+    if (sums.count > n_first) {
+      second = first;
+      n_second = n_first;
+      first = label;
+      n_first = sums.count;
+    } else if (sums.count > n_second) {
+      second = label;
+      n_second = sums.count;
+    }
+  }
+  SampleTurn turn;
+  if (n_second < CreaseAngleParameters::kMinSidePoints)
+    return turn;
+  turn.faces = {{std::min(first, second), std::max(first, second)}};
+  turn.degrees = turnOfSides(sides[first], sides[second]);
+  return turn;
+}
+
+/** The turn at `at` across the contact of the two faces of `pair`, from their points
+ * within radius split by geometry, not by label: the labels give only the direction
+ * across (from one face's centroid to the other's, in the plane of both); the points
+ * of both faces on either side of `at` along it are the two sides. Where the
+ * watershed's boundary wanders off a crease each face holds points of both surfaces,
+ * and planes fitted by label would both average them (a 90-degree crease read 4-13
+ * degrees on the filleted box). */
+double
+contactTurn(const FacePointIndex& index,
+            const std::vector<Eigen::Vector3d>& points,
+            const std::vector<std::uint32_t>& labels,
+            const Eigen::Vector3d& at,
+            double radius,
+            const std::array<std::uint32_t, 2>& pair)
+{
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  std::vector<Eigen::Vector3d> local;
+  PlaneSums a, b, both;
+  index.forEachWithin(at, radius, [&](std::uint32_t i) {
+    const Eigen::Vector3d p = points[i] - at;
+    if (labels[i] == pair[0])
+      a.add(p);
+    else if (labels[i] == pair[1])
+      b.add(p);
+    else
+      return;
+    both.add(p);
+    local.push_back(p);
+  });
+  if (a.count < CreaseAngleParameters::kMinSidePoints ||
+      b.count < CreaseAngleParameters::kMinSidePoints)
+    return nan;
+  const Eigen::Vector3d n = both.normal();
+  Eigen::Vector3d across = a.mean() - b.mean();
+  across -= across.dot(n) * n;
+  if (!(across.norm() > 0.0))
+    return nan;
+  across.normalize();
+  PlaneSums side_a, side_b;
+  for (const Eigen::Vector3d& p : local)
+    (p.dot(across) > 0.0 ? side_a : side_b).add(p);
+  if (side_a.count < CreaseAngleParameters::kMinSidePoints ||
+      side_b.count < CreaseAngleParameters::kMinSidePoints)
+    return nan;
+  return turnOfSides(side_a, side_b);
+}
+
+/** The median of values (sorted in place); NaN when empty. */
+double
+median(std::vector<double>& values)
+{
+  if (values.empty())
+    return std::numeric_limits<double>::quiet_NaN();
+  std::sort(values.begin(), values.end());
+  const std::size_t n = values.size();
+  return n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+} // namespace
+
+double
+sideTurnDegrees(const std::vector<Eigen::Vector3d>& side_a,
+                const std::vector<Eigen::Vector3d>& side_b,
+                const Eigen::Vector3d& at)
+{
+  PlaneSums a, b;
+  for (const Eigen::Vector3d& p : side_a)
+    a.add(p - at);
+  for (const Eigen::Vector3d& p : side_b)
+    b.add(p - at);
+  return turnOfSides(a, b);
+}
+
+std::vector<CreaseAngle>
+measureCreaseAngles(const std::vector<Eigen::Vector3d>& points,
+                    const std::vector<std::uint32_t>& labels,
+                    const std::vector<FeatureClass>& classes,
+                    double cell_size,
+                    double window_cells)
+{
+  std::vector<CreaseAngle> angles(classes.size());
+  const double radius = window_cells * cell_size;
+  if (!(radius > 0.0) || points.size() != labels.size())
+    return angles;
+  // Per edge, its points.
+  std::vector<std::vector<std::uint32_t>> edge_points(classes.size());
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const std::uint32_t l = labels[i];
+    if (l != 0 && l <= classes.size() && classes[l - 1] == FeatureClass::kEdge &&
+        points[i].allFinite())
+      edge_points[l - 1].push_back(static_cast<std::uint32_t>(i));
+  }
+  const FacePointIndex index(points, labels, classes, radius);
+  for (std::size_t r = 0; r < classes.size(); ++r) {
+    const std::vector<std::uint32_t>& mine = edge_points[r];
+    if (mine.empty())
+      continue;
+    const std::size_t samples =
+      std::min(mine.size(), CreaseAngleParameters::kMaxSamplesPerEdge);
+    std::map<std::array<std::uint32_t, 2>, std::vector<double>> by_pair;
+    for (std::size_t s = 0; s < samples; ++s) {
+      // evenly spread: the middle of the s-th of `samples` equal parts
+      const std::size_t i = mine[(2 * s + 1) * mine.size() / (2 * samples)];
+      const SampleTurn turn = measureSample(index, points, labels, points[i], radius);
+      if (std::isfinite(turn.degrees))
+        by_pair[turn.faces].push_back(turn.degrees);
+    }
+    // The pair most samples saw (the smaller pair among equals).
+    const std::vector<double>* best = nullptr;
+    for (const auto& [pair, turns] : by_pair) {
+      if (best == nullptr || turns.size() > best->size()) {
+        best = &turns;
+        angles[r].faces = pair;
+      }
+    }
+    if (best != nullptr) {
+      std::vector<double> turns = *best;
+      angles[r].samples = static_cast<std::uint32_t>(turns.size());
+      angles[r].degrees = median(turns);
+    }
+  }
+  return angles;
+}
+
+std::vector<CreaseAngle>
+measureFaceContacts(const VoxelBand& band,
+                    const std::vector<std::uint32_t>& cell_labels,
+                    const std::vector<Eigen::Vector3d>& points,
+                    const std::vector<std::uint32_t>& labels,
+                    const std::vector<FeatureClass>& classes,
+                    double window_cells)
+{
+  std::vector<CreaseAngle> contacts;
+  const double cell = band.grid().cell_size, radius = window_cells * cell;
+  if (!(radius > 0.0) || points.size() != labels.size() ||
+      cell_labels.size() != band.size())
+    return contacts;
+  const auto isFace = [&](std::uint32_t l) {
+    return l != 0 && l <= classes.size() && classes[l - 1] == FeatureClass::kFace;
+  };
+  // Per pair of touching faces, the cells of the smaller label along the contact.
+  std::map<std::array<std::uint32_t, 2>, std::vector<CellId>> cells_of;
+  for (std::size_t c = 0; c < band.size(); ++c) {
+    const std::uint32_t a = cell_labels[c];
+    if (!isFace(a))
+      continue;
+    std::uint32_t last = 0; // a cell counts once a pair
+    for (const CellId n : band.neighbours(static_cast<CellId>(c))) {
+      const std::uint32_t b =
+        n == kNoCell ? 0 : cell_labels[static_cast<std::size_t>(n)];
+      if (b > a && b != last && isFace(b)) {
+        cells_of[{{a, b}}].push_back(static_cast<CellId>(c));
+        last = b;
+      }
+    }
+  }
+  const FacePointIndex index(points, labels, classes, radius);
+  const double clearance = CreaseAngleParameters::kContactClearanceCells * cell;
+  const FacePointIndex features(points, labels, classes, clearance, false);
+  for (auto& [pair, cells] : cells_of) {
+    // only the contact away from edges and vertices
+    const auto near = [&](CellId c) {
+      return features.anyWithin(band.grid().cellCenter(band.coord(c)), clearance);
+    };
+    cells.erase(std::remove_if(cells.begin(), cells.end(), near), cells.end());
+    if (cells.empty())
+      continue;
+    const std::size_t samples =
+      std::min(cells.size(), CreaseAngleParameters::kMaxSamplesPerEdge);
+    std::vector<double> turns;
+    for (std::size_t s = 0; s < samples; ++s) {
+      const CellId c = cells[(2 * s + 1) * cells.size() / (2 * samples)];
+      const Eigen::Vector3d at = band.grid().cellCenter(band.coord(c));
+      const double turn = contactTurn(index, points, labels, at, radius, pair);
+      if (std::isfinite(turn))
+        turns.push_back(turn);
+    }
+    if (turns.size() < CreaseAngleParameters::kMinContactSamples)
+      continue;
+    CreaseAngle contact;
+    contact.faces = pair;
+    contact.samples = static_cast<std::uint32_t>(turns.size());
+    contact.degrees = median(turns);
+    contacts.push_back(contact);
+  }
+  return contacts;
+}
+
+namespace {
+
+/** Union-find whose root is chosen by the caller (attach b's set under a's root). */
+struct Joined
+{
+  std::vector<std::uint32_t> parent;
+
+  explicit Joined(std::size_t n)
+      : parent(n + 1)
+  {
+    for (std::size_t l = 0; l <= n; ++l)
+      parent[l] = static_cast<std::uint32_t>(l);
+  }
+  std::uint32_t find(std::uint32_t a)
+  {
+    while (parent[a] != a)
+      a = parent[a] = parent[parent[a]];
+    return a;
+  }
+  /** b's set joins a's; a's root stays the root. */
+  void attach(std::uint32_t a, std::uint32_t b)
+  {
+    const std::uint32_t ra = find(a), rb = find(b);
+    if (ra != rb)
+      parent[rb] = ra;
+  }
+};
+
+/** Each remaining edge of vertex v as the set of its faces' roots; the distinct sets.
+ */
+std::set<std::vector<std::uint32_t>>
+facePairsAt(const TopologyGraph& graph,
+            std::uint32_t v,
+            const std::vector<char>& removed,
+            Joined& joined,
+            std::vector<std::uint32_t>& remaining)
+{
+  std::set<std::vector<std::uint32_t>> pairs;
+  for (const std::uint32_t e : graph.neighbours(v, FeatureClass::kEdge)) {
+    if (removed[e])
+      continue;
+    remaining.push_back(e);
+    std::vector<std::uint32_t> faces;
+    for (const std::uint32_t f : graph.facesOfEdge(e))
+      faces.push_back(joined.find(f));
+    std::sort(faces.begin(), faces.end());
+    faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
+    pairs.insert(faces);
+  }
+  return pairs;
+}
+
+} // namespace
+
+std::vector<std::uint32_t>
+shallowCreaseMerge(const TopologyGraph& graph,
+                   const std::vector<CreaseAngle>& angles,
+                   const std::vector<CreaseAngle>& contacts,
+                   double min_crease_angle)
+{
+  const std::size_t n = graph.size();
+  Joined joined(n);
+  std::vector<char> removed(n + 1, 0);
+  if (min_crease_angle > 0.0) {
+    // 1. Shallow edges: their two faces become one (the smaller label the root).
+    for (std::uint32_t e = 1; e <= n && e <= angles.size(); ++e) {
+      const CreaseAngle& a = angles[e - 1];
+      if (graph.node(e).feature_class != FeatureClass::kEdge ||
+          !std::isfinite(a.degrees) || a.degrees >= min_crease_angle ||
+          a.faces[0] == 0 || !graph.contains(a.faces[1]))
+        continue;
+      removed[e] = 1;
+      const std::uint32_t fa = joined.find(a.faces[0]), fb = joined.find(a.faces[1]);
+      joined.attach(std::min(fa, fb), std::max(fa, fb));
+    }
+    // 2. Faces touching without an edge between them, at a shallow turn, unless a
+    // crease kept separates them elsewhere (then the contact is a spill of the
+    // watershed across that crease, not a blend).
+    const auto creaseBetween = [&](std::uint32_t fa, std::uint32_t fb) {
+      for (std::uint32_t e = 1; e <= n && e <= angles.size(); ++e) {
+        const CreaseAngle& a = angles[e - 1];
+        if (graph.node(e).feature_class != FeatureClass::kEdge || removed[e] ||
+            !std::isfinite(a.degrees) || a.faces[0] == 0)
+          continue;
+        const std::uint32_t x = joined.find(a.faces[0]), y = joined.find(a.faces[1]);
+        if ((x == fa && y == fb) || (x == fb && y == fa))
+          return true;
+      }
+      return false;
+    };
+    for (const CreaseAngle& c : contacts) {
+      if (!std::isfinite(c.degrees) || c.degrees >= min_crease_angle ||
+          c.faces[0] == 0 || !graph.contains(c.faces[1]))
+        continue;
+      const std::uint32_t fa = joined.find(c.faces[0]), fb = joined.find(c.faces[1]);
+      if (!creaseBetween(fa, fb))
+        joined.attach(std::min(fa, fb), std::max(fa, fb));
+    }
+    for (std::uint32_t e = 1; e <= n; ++e)
+      if (removed[e])
+        joined.attach(angles[e - 1].faces[0], e);
+  }
+  // Faces in a set with others: their edges' face pairs may have changed.
+  std::vector<std::uint32_t> set_size(n + 1, 0);
+  for (std::uint32_t f = 1; f <= n; ++f)
+    if (graph.node(f).feature_class == FeatureClass::kFace)
+      ++set_size[joined.find(f)];
+  const auto mergedFace = [&](std::uint32_t f) { return set_size[joined.find(f)] > 1; };
+  // An edge that could not be measured (no two faces around it) whose faces all
+  // merged into one lies inside a blend: it joins that face.
+  for (std::uint32_t e = 1; e <= n && e <= angles.size(); ++e) {
+    if (graph.node(e).feature_class != FeatureClass::kEdge || removed[e] ||
+        std::isfinite(angles[e - 1].degrees))
+      continue;
+    const std::vector<std::uint32_t> faces = graph.facesOfEdge(e);
+    if (faces.empty() || !std::all_of(faces.begin(), faces.end(), mergedFace) ||
+        std::any_of(faces.begin(), faces.end(), [&](std::uint32_t f) {
+          return joined.find(f) != joined.find(faces.front());
+        }))
+      continue;
+    removed[e] = 1;
+    joined.attach(faces.front(), e);
+  }
+  // 3. Vertices of removed edges or of merged faces' edges that no longer end two
+  // different creases.
+  for (std::uint32_t v = 1; v <= n; ++v) {
+    if (graph.node(v).feature_class != FeatureClass::kVertex)
+      continue;
+    const std::vector<std::uint32_t> edges = graph.neighbours(v, FeatureClass::kEdge);
+    const auto changed = [&](std::uint32_t e) {
+      const std::vector<std::uint32_t> faces = graph.facesOfEdge(e);
+      return removed[e] != 0 || std::any_of(faces.begin(), faces.end(), mergedFace);
+    };
+    if (std::none_of(edges.begin(), edges.end(), changed))
+      continue;
+    std::vector<std::uint32_t> remaining;
+    if (facePairsAt(graph, v, removed, joined, remaining).size() >= 2)
+      continue;
+    if (!remaining.empty()) {
+      for (const std::uint32_t e : remaining)
+        joined.attach(remaining.front(), e);
+      joined.attach(remaining.front(), v);
+    } else {
+      const std::vector<std::uint32_t> faces = graph.neighbours(v, FeatureClass::kFace);
+      if (!faces.empty())
+        joined.attach(faces.front(), v);
+    }
+  }
+  // 4. Pieces of one crease: kept edges whose faces were merged and now separate the
+  // same two faces (before, they separated different pairs, so the segmentation
+  // never joined them; e.g. a rim cut where the fillets were) are one edge.
+  std::map<std::vector<std::uint32_t>, std::uint32_t> edge_of_pair;
+  for (std::uint32_t e = 1; e <= n; ++e) {
+    if (graph.node(e).feature_class != FeatureClass::kEdge || removed[e])
+      continue;
+    const std::vector<std::uint32_t> faces = graph.facesOfEdge(e);
+    if (std::none_of(faces.begin(), faces.end(), mergedFace))
+      continue;
+    std::vector<std::uint32_t> roots;
+    for (const std::uint32_t f : faces)
+      roots.push_back(joined.find(f));
+    std::sort(roots.begin(), roots.end());
+    roots.erase(std::unique(roots.begin(), roots.end()), roots.end());
+    if (roots.size() != 2)
+      continue;
+    const auto [it, first] = edge_of_pair.emplace(roots, e);
+    if (!first)
+      joined.attach(it->second, e);
+  }
+  std::vector<std::uint32_t> into(n + 1, 0);
+  for (std::uint32_t l = 1; l <= n; ++l)
+    into[l] = joined.find(l);
+  return into;
+}
+
+} // namespace visfeat

@@ -1,0 +1,295 @@
+// Sharp versus smooth (crease_angles.h): the turn of two sides fitted by planes, on
+// generated two-plane clouds at known turns and rotations, on a rounded crease
+// (a fillet) of known radius, and the merge rule on a hand-labelled sheet of cells.
+
+#include <support/synthetic_shapes.h>
+#include <visfeat/core/band/voxel_band.h>
+#include <visfeat/core/common/error.h>
+#include <visfeat/core/graph/crease_angles.h>
+#include <visfeat/core/graph/topology_graph.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <iostream>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+using visfeat::CreaseAngle;
+using visfeat::FeatureClass;
+namespace syn = visfeat::synthetic;
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kCell = 0.25; // world units a cell
+/** Noise-free planes: the fits are exact up to rounding. */
+constexpr double kExactTolerance = 0.01;
+/** Gaussian noise of 0.2 cell: the median over the samples stays within this. */
+constexpr double kNoisyTolerance = 1.5;
+
+struct LabelledCloud
+{
+  std::vector<Eigen::Vector3d> points;
+  std::vector<std::uint32_t> labels;
+};
+
+/** Two half-planes meeting along the rotated x axis with the given turn (0 = flat),
+ * sampled at random over 40 x 12 cells each side: points within 1 cell of the crease
+ * are the edge (label 2), the others face 1 or face 3; optional Gaussian noise. */
+LabelledCloud
+twoPlanes(double turn_degrees,
+          const Eigen::Matrix3d& rotation,
+          double noise_cells,
+          std::uint64_t seed)
+{
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> along(0.0, 40.0 * kCell);
+  std::uniform_real_distribution<double> across(0.0, 12.0 * kCell);
+  std::normal_distribution<double> noise(0.0, noise_cells * kCell);
+  const double turn = turn_degrees * kPi / 180.0;
+  // side A goes along -y; side B leaves the crease turned by `turn` from +y
+  const Eigen::Vector3d dir_a(0.0, -1.0, 0.0);
+  const Eigen::Vector3d dir_b(0.0, std::cos(turn), std::sin(turn));
+  LabelledCloud cloud;
+  for (int i = 0; i < 20000; ++i) {
+    const bool side_b = i % 2 == 1;
+    const double s = across(rng);
+    Eigen::Vector3d p =
+      Eigen::Vector3d(along(rng), 0.0, 0.0) + s * (side_b ? dir_b : dir_a);
+    p += Eigen::Vector3d(noise(rng), noise(rng), noise(rng));
+    cloud.points.push_back(rotation * p);
+    cloud.labels.push_back(s < kCell ? 2u : (side_b ? 3u : 1u));
+  }
+  return cloud;
+}
+
+const std::vector<FeatureClass> kFaceEdgeFace = {
+  FeatureClass::kFace, FeatureClass::kEdge, FeatureClass::kFace};
+
+TEST(CreaseAngles, SideTurnOfTwoHalfPlanes)
+{
+  for (const double turn : {0.0, 10.0, 30.0, 41.81, 90.0, 109.47, 150.0}) {
+    for (std::uint64_t r = 1; r <= 3; ++r) {
+      const LabelledCloud cloud = twoPlanes(turn, syn::randomRotation(r), 0.0, r);
+      std::vector<Eigen::Vector3d> a, b;
+      for (std::size_t i = 0; i < cloud.points.size(); ++i)
+        if (cloud.labels[i] != 2) // the sides without the edge's strip
+          (cloud.labels[i] == 1 ? a : b).push_back(cloud.points[i]);
+      const Eigen::Vector3d at = syn::randomRotation(r) * Eigen::Vector3d(0.1, 0, 0);
+      EXPECT_NEAR(visfeat::sideTurnDegrees(a, b, at), turn, kExactTolerance)
+        << "turn " << turn << " rotation " << r;
+    }
+  }
+  EXPECT_TRUE(std::isnan(
+    visfeat::sideTurnDegrees({}, {Eigen::Vector3d::Zero()}, Eigen::Vector3d::Zero())));
+}
+
+TEST(CreaseAngles, MeasuredOnLabelledCloudsAtKnownTurns)
+{
+  for (const double turn : {10.0, 30.0, 41.81, 90.0, 120.0}) {
+    for (std::uint64_t r = 1; r <= 3; ++r) {
+      for (const double noise : {0.0, 0.2}) {
+        const LabelledCloud cloud =
+          twoPlanes(turn, syn::randomRotation(10 + r), noise, r);
+        const std::vector<CreaseAngle> angles = visfeat::measureCreaseAngles(
+          cloud.points, cloud.labels, kFaceEdgeFace, kCell,
+          visfeat::CreaseAngleParameters::kDefaultWindowCells);
+        ASSERT_EQ(angles.size(), 3u);
+        EXPECT_TRUE(std::isnan(angles[0].degrees)); // faces have none
+        EXPECT_TRUE(std::isnan(angles[2].degrees));
+        EXPECT_NEAR(angles[1].degrees, turn, noise > 0.0 ? kNoisyTolerance : 0.05)
+          << "turn " << turn << " rotation " << r << " noise " << noise;
+        EXPECT_EQ(angles[1].faces[0], 1u);
+        EXPECT_EQ(angles[1].faces[1], 3u);
+        EXPECT_GT(angles[1].samples, 0u);
+      }
+    }
+  }
+}
+
+/** Two perpendicular planes joined by a quarter cylinder of radius r cells, sampled
+ * densely; the edge is the points within 1 cell (of arc) of the fillet's middle. */
+LabelledCloud
+fillet(double radius_cells, const Eigen::Matrix3d& rotation)
+{
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const double r = radius_cells * kCell, arc = 0.5 * kPi * r, flat = 20.0 * kCell;
+  const double length = 40.0 * kCell;
+  LabelledCloud cloud;
+  for (int i = 0; i < 60000; ++i) {
+    // s: arc length from the fillet's middle, negative on side A
+    const double s = (unit(rng) * 2.0 - 1.0) * (0.5 * arc + flat);
+    const double x = unit(rng) * length;
+    Eigen::Vector3d p;
+    if (std::abs(s) <= 0.5 * arc) {
+      const double a = s / r; // -45..45 degrees; the tangent turns with a
+      p = Eigen::Vector3d(x, r * std::sin(a), r - r * std::cos(a));
+    } else {
+      const double sign = s < 0 ? -1.0 : 1.0, beyond = std::abs(s) - 0.5 * arc;
+      const double a = sign * 0.25 * kPi;
+      const Eigen::Vector3d end(x, r * std::sin(a), r - r * std::cos(a));
+      p = end + beyond * sign * Eigen::Vector3d(0.0, std::cos(a), std::sin(a));
+    }
+    cloud.points.push_back(rotation * p);
+    cloud.labels.push_back(std::abs(s) < kCell ? 2u : (s < 0 ? 1u : 3u));
+  }
+  return cloud;
+}
+
+// The rule of README "Sharp versus smooth": over the default window a fillet of radius
+// r cells reads about 2 d / r radians (d about 2.3 cells), so radii above about 13
+// cells read below 20 degrees, and a tight blend of 6 cells stays a crease.
+TEST(CreaseAngles, FilletsReadByTheirRadius)
+{
+  const auto measure = [](double radius_cells) {
+    const LabelledCloud cloud = fillet(radius_cells, syn::randomRotation(5));
+    return visfeat::measureCreaseAngles(
+             cloud.points, cloud.labels, kFaceEdgeFace, kCell,
+             visfeat::CreaseAngleParameters::kDefaultWindowCells)[1]
+      .degrees;
+  };
+  const double wide = measure(19.2), tight = measure(6.0), sharp = measure(0.01);
+  std::cout << "fillet radius 19.2 cells: " << wide << " degrees, 6 cells: " << tight
+            << ", 0.01 cells: " << sharp << std::endl;
+  EXPECT_LT(wide, visfeat::CreaseAngleParameters::kDefaultMinCreaseAngle);
+  EXPECT_GT(wide, 5.0); // the bend is measured, not zero
+  EXPECT_GT(tight, visfeat::CreaseAngleParameters::kDefaultMinCreaseAngle);
+  EXPECT_NEAR(sharp, 90.0, 1.0);
+  EXPECT_GT(tight, wide);
+}
+
+// --- The merge rule on a sheet of cells ----------------------------------------------
+
+/** A 40 x 20 sheet of cells (z = 0): F1 x < 18; E2 x 18-19, y < 9; V4 x 18-19,
+ * y 9-10; E5 x 18-19, y > 10; F3 x >= 20, y < 9; E7 x >= 20, y 9-10; F6 x >= 20,
+ * y > 10. V4 is the corner where E2 (F1 | F3), E5 (F1 | F6) and E7 (F3 | F6) meet. */
+visfeat::TopologyGraph
+sheetGraph()
+{
+  visfeat::GridSpec grid;
+  grid.origin = Eigen::Vector3d::Zero();
+  grid.cell_size = 1.0;
+  grid.dims = Eigen::Vector3i(40, 20, 1);
+  std::vector<visfeat::CellCoord> cells;
+  for (int y = 0; y < 20; ++y)
+    for (int x = 0; x < 40; ++x)
+      cells.emplace_back(x, y, 0);
+  visfeat::VoxelBand::Options options;
+  options.repair = false;
+  const visfeat::VoxelBand band = visfeat::VoxelBand::fromCells(grid, cells, options);
+  std::vector<std::uint32_t> labels(band.size());
+  for (std::size_t i = 0; i < band.size(); ++i) {
+    const visfeat::CellCoord& c = band.coord(static_cast<visfeat::CellId>(i));
+    const int x = c.x(), y = c.y();
+    const int band_y = y < 9 ? 0 : (y <= 10 ? 1 : 2);
+    if (x < 18)
+      labels[i] = 1;
+    else if (x < 20)
+      labels[i] = band_y == 0 ? 2 : (band_y == 1 ? 4 : 5);
+    else
+      labels[i] = band_y == 0 ? 3 : (band_y == 1 ? 7 : 6);
+  }
+  const std::vector<FeatureClass> classes = {FeatureClass::kFace, FeatureClass::kEdge,
+                                             FeatureClass::kFace, FeatureClass::kVertex,
+                                             FeatureClass::kEdge, FeatureClass::kFace,
+                                             FeatureClass::kEdge};
+  return visfeat::TopologyGraph::build(band, labels, classes, {});
+}
+
+std::vector<CreaseAngle>
+sheetAngles(double e2, double e5, double e7)
+{
+  std::vector<CreaseAngle> angles(7);
+  angles[1].degrees = e2;
+  angles[1].faces = {{1, 3}};
+  angles[4].degrees = e5;
+  angles[4].faces = {{1, 6}};
+  angles[6].degrees = e7;
+  angles[6].faces = {{3, 6}};
+  return angles;
+}
+
+TEST(CreaseAngles, MergeRuleOnASheet)
+{
+  const visfeat::TopologyGraph graph = sheetGraph();
+  ASSERT_EQ(graph.verticesOfEdge(2), std::vector<std::uint32_t>({4}));
+  using Into = std::vector<std::uint32_t>;
+  const Into kept = {0, 1, 2, 3, 4, 5, 6, 7};
+  // Every edge steep enough, or the rule off: nothing changes.
+  EXPECT_EQ(visfeat::shallowCreaseMerge(graph, sheetAngles(90, 90, 90), {}, 20.0),
+            kept);
+  EXPECT_EQ(visfeat::shallowCreaseMerge(graph, sheetAngles(10, 10, 10), {}, 0.0), kept);
+  // Unmeasured edges stay.
+  EXPECT_EQ(visfeat::shallowCreaseMerge(graph, sheetAngles(NAN, 90, 90), {}, 20.0),
+            kept);
+  // E2 shallow: F1 and F3 are one face; the corner then ends only E5 and E7, which
+  // separate the same pair (F1+F3 | F6): V4 and E7 join E5, one straight crease.
+  EXPECT_EQ(visfeat::shallowCreaseMerge(graph, sheetAngles(19.9, 90, 90), {}, 20.0),
+            Into({0, 1, 1, 1, 5, 5, 6, 5}));
+  // At exactly the minimum the edge stays a crease.
+  EXPECT_EQ(visfeat::shallowCreaseMerge(graph, sheetAngles(20.0, 90, 90), {}, 20.0),
+            kept);
+  // Two shallow edges: F1, F3 and F6 are one face, E5 a crease that fades into it;
+  // V4 no longer joins two different pairs of faces and becomes part of E5.
+  EXPECT_EQ(visfeat::shallowCreaseMerge(graph, sheetAngles(10, 90, 10), {}, 20.0),
+            Into({0, 1, 1, 1, 5, 5, 1, 1}));
+  // Faces touching without an edge: a shallow contact of F3 and F6 is a spill of the
+  // watershed while E7, a crease kept, separates them: nothing changes.
+  visfeat::CreaseAngle contact;
+  contact.faces = {{3, 6}};
+  contact.degrees = 12.0;
+  EXPECT_EQ(
+    visfeat::shallowCreaseMerge(graph, sheetAngles(90, 90, 90), {contact}, 20.0), kept);
+  // With E7 unmeasured the contact makes F3 and F6 one face; E7, inside it, joins
+  // it; V4 then ends E2 and E5 only, which separate the same two faces: V4 and E5
+  // join E2.
+  EXPECT_EQ(
+    visfeat::shallowCreaseMerge(graph, sheetAngles(90, 90, NAN), {contact}, 20.0),
+    Into({0, 1, 2, 3, 2, 2, 3, 3}));
+  contact.degrees = 25.0;
+  EXPECT_EQ(
+    visfeat::shallowCreaseMerge(graph, sheetAngles(90, 90, NAN), {contact}, 20.0),
+    kept);
+}
+
+TEST(CreaseAngles, WrittenInTheGraphJsonForEdges)
+{
+  visfeat::TopologyGraph graph = sheetGraph();
+  graph.setCreaseAngle(2, 33.5);
+  EXPECT_EQ(graph.node(2).crease_angle, 33.5);
+  EXPECT_TRUE(std::isnan(graph.node(5).crease_angle));
+  EXPECT_THROW(graph.setCreaseAngle(8, 1.0), visfeat::Error);
+  std::ostringstream out;
+  graph.writeJson(out, {});
+  const std::string json = out.str();
+  // three edges: one measured, two null; no other node has the field
+  EXPECT_NE(json.find("\"crease_angle\": 33.5"), std::string::npos) << json;
+  std::size_t fields = 0, nulls = 0;
+  for (std::size_t at = json.find("crease_angle"); at != std::string::npos;
+       at = json.find("crease_angle", at + 1)) {
+    ++fields;
+    nulls += json.compare(at, 19, "crease_angle\": null") == 0;
+  }
+  EXPECT_EQ(fields, 3u);
+  EXPECT_EQ(nulls, 2u);
+}
+
+TEST(CreaseAngles, ParametersValidate)
+{
+  visfeat::CreaseAngleParameters p;
+  EXPECT_NO_THROW(p.validate());
+  EXPECT_EQ(p.min_crease_angle, 20.0);
+  p.min_crease_angle = -1.0;
+  EXPECT_THROW(p.validate(), visfeat::Error);
+  p.min_crease_angle = 180.5;
+  EXPECT_THROW(p.validate(), visfeat::Error);
+  p = visfeat::CreaseAngleParameters{};
+  p.window_cells = 0.5;
+  EXPECT_THROW(p.validate(), visfeat::Error);
+}
+
+} // namespace
