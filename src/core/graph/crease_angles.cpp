@@ -6,6 +6,7 @@
 #include <visfeat/core/band/voxel_band.h>
 
 #include "../common/angles.h"
+#include "face_point_index.h"
 
 #include <Eigen/Eigenvalues>
 
@@ -24,6 +25,8 @@ CreaseAngleParameters::validate() const
 }
 
 namespace {
+
+using detail::FacePointIndex;
 
 /** Points accumulated for a least-squares plane. */
 struct PlaneSums
@@ -79,76 +82,6 @@ turnOfSides(const PlaneSums& a, const PlaneSums& b)
   const double cosine = std::clamp(ua.dot(ub) / (la * lb), -1.0, 1.0);
   return 180.0 - std::acos(cosine) * 180.0 / detail::kPi;
 }
-
-/** Face points sorted by their bucket (a cube of the window's size) for neighbour
- * queries: a point within the window of x lies in one of the 27 buckets around x's. */
-class FacePointIndex
-{
-public:
-  /** Indexes the points of face regions, or (faces false) of edge and vertex
-   * regions. */
-  FacePointIndex(const std::vector<Eigen::Vector3d>& points,
-                 const std::vector<std::uint32_t>& labels,
-                 const std::vector<FeatureClass>& classes,
-                 double bucket,
-                 bool faces = true)
-      : points_(points)
-      , bucket_(bucket)
-  {
-    for (std::size_t i = 0; i < points.size(); ++i) {
-      const std::uint32_t l = labels[i];
-      if (l == 0 || l > classes.size() || !points[i].allFinite())
-        continue;
-      const FeatureClass cls = classes[l - 1];
-      const bool feature = cls == FeatureClass::kEdge || cls == FeatureClass::kVertex;
-      if (faces ? cls != FeatureClass::kFace : !feature)
-        continue;
-      entries_.push_back({key(cellOf(points[i])), static_cast<std::uint32_t>(i)});
-    }
-    std::sort(entries_.begin(), entries_.end());
-  }
-
-  /** Whether an indexed point lies within radius (at most the bucket) of x. */
-  bool anyWithin(const Eigen::Vector3d& x, double radius) const
-  {
-    bool found = false;
-    forEachWithin(x, radius, [&](std::uint32_t) { found = true; });
-    return found;
-  }
-
-  /** Calls f(i) for every indexed point i within radius of x. */
-  template <typename F>
-  void forEachWithin(const Eigen::Vector3d& x, double radius, F f) const
-  {
-    const Eigen::Vector3i c = cellOf(x);
-    for (int dz = -1; dz <= 1; ++dz)
-      for (int dy = -1; dy <= 1; ++dy)
-        for (int dx = -1; dx <= 1; ++dx) {
-          const std::int64_t k = key(c + Eigen::Vector3i(dx, dy, dz));
-          auto it = std::lower_bound(entries_.begin(), entries_.end(),
-                                     std::make_pair(k, std::uint32_t(0)));
-          for (; it != entries_.end() && it->first == k; ++it)
-            if ((points_[it->second] - x).squaredNorm() <= radius * radius)
-              f(it->second);
-        }
-  }
-
-private:
-  Eigen::Vector3i cellOf(const Eigen::Vector3d& p) const
-  {
-    return (p / bucket_).array().floor().cast<int>();
-  }
-  static std::int64_t key(const Eigen::Vector3i& c)
-  {
-    // 21 bits a coordinate: buckets are windows of >= 1 cell on grids of <= 8192
-    constexpr std::int64_t kBias = 1 << 20, kSpan = std::int64_t(1) << 21;
-    return ((c.z() + kBias) * kSpan + (c.y() + kBias)) * kSpan + (c.x() + kBias);
-  }
-
-  const std::vector<Eigen::Vector3d>& points_;
-  double bucket_;
-  std::vector<std::pair<std::int64_t, std::uint32_t>> entries_;
-};
 
 /** One sample's measure: its two main faces (smaller label first) and their turn. */
 struct SampleTurn
