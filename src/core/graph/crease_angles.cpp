@@ -90,6 +90,75 @@ struct SampleTurn
   double degrees = std::numeric_limits<double>::quiet_NaN();
 };
 
+/** The walk across a blend stops where its window holds fewer than this share of the
+ * points of its first window (measured on two half-planes 12 cells wide: windows at
+ * their outer border read turns of 20-70 degrees for a 10-degree crease). */
+constexpr double kScanMinWindowShare = 0.75;
+/** A position of the walk is measured only when each side holds this share of the
+ * window's points: a sliver's plane is noise. */
+constexpr double kScanMinSideShare = 0.3;
+
+/** Walking from `at` along `direction` over the two faces' points (steps of half the
+ * window, kContactScanWindows windows far, each position moved onto the plane of the
+ * points around it and the direction turned into that plane), the largest turn
+ * between the points before and after a position (sideTurnDegrees() of the window);
+ * 0 when no position holds kMinSidePoints a side. */
+double
+sharpestTurnAlong(const FacePointIndex& index,
+                  const std::vector<Eigen::Vector3d>& points,
+                  const std::vector<std::uint32_t>& labels,
+                  const Eigen::Vector3d& at,
+                  Eigen::Vector3d direction,
+                  double radius,
+                  const std::array<std::uint32_t, 2>& pair)
+{
+  double sharpest = 0.0;
+  Eigen::Vector3d position = at;
+  const int steps = static_cast<int>(2.0 * CreaseAngleParameters::kContactScanWindows);
+  std::vector<Eigen::Vector3d> local;
+  // a window that holds much fewer points than the first reaches the faces' border
+  // (another face, a hole, the cloud's end), where a side is a sliver whose plane is
+  // noise: the walk ends there
+  std::size_t first_count = 0;
+  index.forEachWithin(at, radius, [&](std::uint32_t i) {
+    first_count += labels[i] == pair[0] || labels[i] == pair[1];
+  });
+  for (int k = 1; k <= steps; ++k) {
+    position += 0.5 * radius * direction;
+    local.clear();
+    PlaneSums all;
+    index.forEachWithin(position, radius, [&](std::uint32_t i) {
+      if (labels[i] != pair[0] && labels[i] != pair[1])
+        return;
+      local.push_back(points[i] - position);
+      all.add(local.back());
+    });
+    if (all.count < 2 * CreaseAngleParameters::kMinSidePoints ||
+        double(all.count) < kScanMinWindowShare * double(first_count))
+      break;
+    const Eigen::Vector3d n = all.normal();
+    const Eigen::Vector3d offset = all.mean().dot(n) * n; // onto the local plane
+    position += offset;
+    direction -= direction.dot(n) * n;
+    if (!(direction.norm() > 0.0))
+      break;
+    direction.normalize();
+    PlaneSums before, after;
+    for (const Eigen::Vector3d& p : local)
+      (p - offset).dot(direction) > 0.0 ? after.add(p - offset)
+                                        : before.add(p - offset);
+    if (before.count < CreaseAngleParameters::kMinSidePoints ||
+        after.count < CreaseAngleParameters::kMinSidePoints ||
+        double(std::min(before.count, after.count)) <
+          kScanMinSideShare * double(all.count))
+      continue;
+    const double turn = turnOfSides(before, after);
+    if (std::isfinite(turn))
+      sharpest = std::max(sharpest, turn);
+  }
+  return sharpest;
+}
+
 /** The turn at `at` between the two faces with most points within radius. */
 SampleTurn
 measureSample(const FacePointIndex& index,
@@ -120,6 +189,25 @@ measureSample(const FacePointIndex& index,
     return turn;
   turn.faces = {{std::min(first, second), std::max(first, second)}};
   turn.degrees = turnOfSides(sides[first], sides[second]);
+  if (!std::isfinite(turn.degrees))
+    return turn;
+  // the sharpest turn across: an edge region on a chamfer narrower than the
+  // separation has both faces' points on the chamfer beside it (a 45-degree chamfer
+  // crease read 15 degrees), its creases lie a few cells away
+  PlaneSums both = sides[first];
+  both.count += sides[second].count;
+  both.sum += sides[second].sum;
+  both.outer += sides[second].outer;
+  const Eigen::Vector3d n = both.normal();
+  Eigen::Vector3d across = sides[first].mean() - sides[second].mean();
+  across -= across.dot(n) * n;
+  if (!(across.norm() > 0.0))
+    return turn;
+  across.normalize();
+  for (const double way : {1.0, -1.0})
+    turn.degrees =
+      std::max(turn.degrees, sharpestTurnAlong(index, points, labels, at, way * across,
+                                               radius, {{first, second}}));
   return turn;
 }
 
@@ -167,7 +255,17 @@ contactTurn(const FacePointIndex& index,
   if (side_a.count < CreaseAngleParameters::kMinSidePoints ||
       side_b.count < CreaseAngleParameters::kMinSidePoints)
     return nan;
-  return turnOfSides(side_a, side_b);
+  const double here = turnOfSides(side_a, side_b);
+  if (!std::isfinite(here))
+    return nan;
+  // The sharpest turn across the blend: a chamfer narrower than the separation is
+  // split between its two faces like a fillet, but its middle is flat and its turns
+  // are sharp a few cells away.
+  double sharpest = here;
+  for (const double way : {1.0, -1.0})
+    sharpest = std::max(sharpest, sharpestTurnAlong(index, points, labels, at,
+                                                    way * across, radius, pair));
+  return sharpest;
 }
 
 /** The median of values (sorted in place); NaN when empty. */

@@ -62,6 +62,14 @@ struct CreaseAngleParameters
    * neighbouring surface and the turn reads shallow (measured on the filleted box:
    * top-side contacts at its corners read 20-33 degrees). */
   static constexpr double kContactClearanceCells = 8.0;
+  /** \brief A contact's turn is the sharpest one met walking this many windows to
+   * each side of it across the two faces (in steps of half a window): a fillet turns
+   * gently all the way, a chamfer narrower than the separation, split between its two
+   * faces like a fillet, is flat in its middle and turns sharply a few cells away
+   * (measured at 256: chamfer faces of 6-20 cells read 0-5 degrees at the contact and
+   * 45 at their creases; the filleted box's radius-19-cell fillets 12-15 all across).
+   */
+  static constexpr double kContactScanWindows = 3.0;
 
   /** \brief [0, 180] degrees. */
   static constexpr ParameterRange<double> kMinCreaseAngleRange{0.0, 180.0};
@@ -120,8 +128,10 @@ std::vector<CreaseAngle> measureCreaseAngles(const std::vector<Eigen::Vector3d>&
  * Per pair of touching faces (a < b in `faces`), samples at up to kMaxSamplesPerEdge
  * of the contact's cells farther than kContactClearanceCells from every edge and
  * vertex point (their centres) measure the turn between the planes fitted to
- * the two faces' points within the window (sideTurnDegrees(), kMinSidePoints a side);
- * the median over at least kMinContactSamples samples, else the pair is left out.
+ * the two faces' points within the window (sideTurnDegrees(), kMinSidePoints a side),
+ * and the sharpest turn met walking kContactScanWindows windows to both sides across
+ * the contact; a sample's turn is the larger; the contact's the median over at least
+ * kMinContactSamples samples, else the pair is left out.
  * cell_labels: per band cell its region label; points, labels, classes and
  * window_cells as measureCreaseAngles(). */
 std::vector<CreaseAngle>
