@@ -2,6 +2,8 @@
 // with known Gaussian noise at random orientations, across a crease and on too few
 // cells; and the estimator's warning on a noisy cloud outside the noise mode.
 
+#include "band_fixtures.h"
+
 #include <support/cad_catalogue.h>
 #include <support/cad_sampling.h>
 #include <support/portable_random.h>
@@ -35,16 +37,6 @@ struct Cells
   std::vector<std::uint32_t> counts;
   std::vector<Eigen::Vector3d> sums;
 };
-
-GridSpec
-gridOfCells(int side)
-{
-  GridSpec grid;
-  grid.origin = Eigen::Vector3d::Zero();
-  grid.cell_size = 1.0;
-  grid.dims = Eigen::Vector3i::Constant(side);
-  return grid;
-}
 
 Cells
 binned(const GridSpec& grid, const std::vector<Eigen::Vector3d>& points)
@@ -108,7 +100,7 @@ const Eigen::Vector3d kCentre(32.3, 31.7, 32.1);
 
 TEST(BandRoughness, CleanPlanesAtAnyOrientationAreSmooth)
 {
-  const GridSpec grid = gridOfCells(64);
+  const GridSpec grid = visfeat_test::cubeGrid(64);
   for (const std::uint64_t seed : {1u, 2u, 3u, 4u}) {
     std::mt19937_64 rng(seed);
     std::normal_distribution<double> g;
@@ -124,7 +116,7 @@ TEST(BandRoughness, CleanPlanesAtAnyOrientationAreSmooth)
 
 TEST(BandRoughness, GrowsWithTheNoiseAtAboutHalfToOneSigma)
 {
-  const GridSpec grid = gridOfCells(64);
+  const GridSpec grid = visfeat_test::cubeGrid(64);
   for (const std::uint64_t seed : {5u, 6u, 7u}) {
     std::mt19937_64 rng(seed);
     std::normal_distribution<double> g;
@@ -146,7 +138,7 @@ TEST(BandRoughness, GrowsWithTheNoiseAtAboutHalfToOneSigma)
 TEST(BandRoughness, ACreaseIsOutvotedByTheFacesAroundIt)
 {
   // two clean half-planes meeting at 90 degrees along a line through the centre
-  const GridSpec grid = gridOfCells(64);
+  const GridSpec grid = visfeat_test::cubeGrid(64);
   std::vector<Eigen::Vector3d> points;
   std::mt19937_64 rng(9);
   std::uniform_real_distribution<double> along(-25.0, 25.0), out(0.0, 25.0);
@@ -162,7 +154,7 @@ TEST(BandRoughness, ACreaseIsOutvotedByTheFacesAroundIt)
 
 TEST(BandRoughness, TooFewCellsMeasureNothing)
 {
-  const GridSpec grid = gridOfCells(64);
+  const GridSpec grid = visfeat_test::cubeGrid(64);
   // a plane 3 cells wide: fewer than kMinRoughnessBlocks blocks
   EXPECT_EQ(
     roughnessOf(grid, noisyPlane(Eigen::Vector3d::UnitZ(), 1.5, 0.5, 0.1, 1, kCentre)),

@@ -48,6 +48,20 @@ struct BlendRun
   visfeat::TopologyGraph graph;
 };
 
+/** The estimator at kResolution with the given minimum crease angle on a cloud. */
+void
+computeAt256(Estimator& est,
+             const pcl::PointCloud<pcl::PointXYZ>::Ptr& cloud,
+             double min_angle)
+{
+  est.setInputCloud(cloud);
+  est.setResolution(kResolution);
+  est.setMinCreaseAngle(min_angle);
+  pcl::PointCloud<visfeat::PointVisibility> out;
+  est.compute(out);
+  EXPECT_EQ(est.getErrorMessage(), "");
+}
+
 BlendRun
 runModel(const syn::BlendModel& model, std::uint64_t rotation, double min_angle)
 {
@@ -58,12 +72,7 @@ runModel(const syn::BlendModel& model, std::uint64_t rotation, double min_angle)
   for (const Eigen::Vector3f& p : syn::sampleSurface(mesh, count, rotation))
     cloud->push_back(pcl::PointXYZ(p.x(), p.y(), p.z()));
   Estimator est;
-  est.setInputCloud(cloud);
-  est.setResolution(kResolution);
-  est.setMinCreaseAngle(min_angle);
-  pcl::PointCloud<visfeat::PointVisibility> out;
-  est.compute(out);
-  EXPECT_EQ(est.getErrorMessage(), "");
+  computeAt256(est, cloud, min_angle);
   BlendRun run;
   run.counts = est.getSegmentation().classCounts();
   run.graph = est.getTopologyGraph();
@@ -142,12 +151,7 @@ cadCounts(const std::string& name, std::uint64_t rotation, double min_angle)
   for (const Eigen::Vector3f& p : syn::sampleCadModel(model, options).points)
     cloud->push_back(pcl::PointXYZ(p.x(), p.y(), p.z()));
   Estimator est;
-  est.setInputCloud(cloud);
-  est.setResolution(kResolution);
-  est.setMinCreaseAngle(min_angle);
-  pcl::PointCloud<visfeat::PointVisibility> out;
-  est.compute(out);
-  EXPECT_EQ(est.getErrorMessage(), "");
+  computeAt256(est, cloud, min_angle);
   return est.getSegmentation().classCounts();
 }
 
