@@ -97,6 +97,10 @@ constexpr double kScanMinWindowShare = 0.75;
 /** A position of the walk is measured only when each side holds this share of the
  * window's points: a sliver's plane is noise. */
 constexpr double kScanMinSideShare = 0.3;
+/** Edge samples turning this much or more are sharp where they are: they are not
+ * walked across (the walk only raises a turn, and it matters only below the minimum
+ * crease angle, whose range this covers up to 60 degrees; most CAD creases turn 90). */
+constexpr double kWalkBelowDegrees = 60.0;
 
 /** Walking from `at` along `direction` over the two faces' points (steps of half the
  * window, kContactScanWindows windows far, each position moved onto the plane of the
@@ -189,7 +193,7 @@ measureSample(const FacePointIndex& index,
     return turn;
   turn.faces = {{std::min(first, second), std::max(first, second)}};
   turn.degrees = turnOfSides(sides[first], sides[second]);
-  if (!std::isfinite(turn.degrees))
+  if (!std::isfinite(turn.degrees) || turn.degrees >= kWalkBelowDegrees)
     return turn;
   // the sharpest turn across: an edge region on a chamfer narrower than the
   // separation has both faces' points on the chamfer beside it (a 45-degree chamfer
