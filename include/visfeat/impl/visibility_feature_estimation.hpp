@@ -309,7 +309,8 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::mergeShallowCreases(
     for (const Region& region : results.segmentation.regions())
       classes.push_back(region.feature_class);
     return measureCreaseAngles(points, labels, classes, results.band.grid().cell_size,
-                               run.crease_angles.window_cells);
+                               run.crease_angles.window_cells,
+                               run.crease_angles.min_crease_angle);
   };
   std::vector<CreaseAngle> angles = measure();
   std::vector<FeatureClass> classes;

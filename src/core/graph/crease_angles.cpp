@@ -97,10 +97,6 @@ constexpr double kScanMinWindowShare = 0.75;
 /** A position of the walk is measured only when each side holds this share of the
  * window's points: a sliver's plane is noise. */
 constexpr double kScanMinSideShare = 0.3;
-/** Edge samples turning this much or more are sharp where they are: they are not
- * walked across (the walk only raises a turn, and it matters only below the minimum
- * crease angle, whose range this covers up to 60 degrees; most CAD creases turn 90). */
-constexpr double kWalkBelowDegrees = 60.0;
 
 /** Walking from `at` along `direction` over the two faces' points (steps of half the
  * window, kContactScanWindows windows far, each position moved onto the plane of the
@@ -169,7 +165,8 @@ measureSample(const FacePointIndex& index,
               const std::vector<Eigen::Vector3d>& points,
               const std::vector<std::uint32_t>& labels,
               const Eigen::Vector3d& at,
-              double radius)
+              double radius,
+              double walk_below_degrees)
 {
   std::map<std::uint32_t, PlaneSums> sides;
   index.forEachWithin(at, radius,
@@ -193,7 +190,7 @@ measureSample(const FacePointIndex& index,
     return turn;
   turn.faces = {{std::min(first, second), std::max(first, second)}};
   turn.degrees = turnOfSides(sides[first], sides[second]);
-  if (!std::isfinite(turn.degrees) || turn.degrees >= kWalkBelowDegrees)
+  if (!std::isfinite(turn.degrees) || turn.degrees >= walk_below_degrees)
     return turn;
   // the sharpest turn across: an edge region on a chamfer narrower than the
   // separation has both faces' points on the chamfer beside it (a 45-degree chamfer
@@ -303,7 +300,8 @@ measureCreaseAngles(const std::vector<Eigen::Vector3d>& points,
                     const std::vector<std::uint32_t>& labels,
                     const std::vector<FeatureClass>& classes,
                     double cell_size,
-                    double window_cells)
+                    double window_cells,
+                    double walk_below_degrees)
 {
   std::vector<CreaseAngle> angles(classes.size());
   const double radius = window_cells * cell_size;
@@ -328,7 +326,8 @@ measureCreaseAngles(const std::vector<Eigen::Vector3d>& points,
     for (std::size_t s = 0; s < samples; ++s) {
       // evenly spread: the middle of the s-th of `samples` equal parts
       const std::size_t i = mine[(2 * s + 1) * mine.size() / (2 * samples)];
-      const SampleTurn turn = measureSample(index, points, labels, points[i], radius);
+      const SampleTurn turn =
+        measureSample(index, points, labels, points[i], radius, walk_below_degrees);
       if (std::isfinite(turn.degrees))
         by_pair[turn.faces].push_back(turn.degrees);
     }

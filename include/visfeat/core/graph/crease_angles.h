@@ -114,12 +114,18 @@ double sideTurnDegrees(const std::vector<Eigen::Vector3d>& side_a,
  *
  * Each edge's samples (up to kMaxSamplesPerEdge of its points) take the face points
  * within the window; the two faces with most points there are the sample's sides
- * (each needs kMinSidePoints), measured by sideTurnDegrees(). Deterministic. */
+ * (each needs kMinSidePoints), measured by sideTurnDegrees(); where that turn is
+ * below walk_below_degrees (degrees; default: always) the sample's turn is the
+ * sharpest met walking kContactScanWindows windows to both sides across (a chamfer
+ * narrower than the separation reads shallow at its middle). The estimator passes its
+ * minimum crease angle: the walk only raises a turn, so it matters only below it.
+ * Deterministic. */
 std::vector<CreaseAngle> measureCreaseAngles(const std::vector<Eigen::Vector3d>& points,
                                              const std::vector<std::uint32_t>& labels,
                                              const std::vector<FeatureClass>& classes,
                                              double cell_size,
-                                             double window_cells);
+                                             double window_cells,
+                                             double walk_below_degrees = 180.0);
 
 /** \brief The turn where two face regions touch with no edge region between them
  * (their cells are 6-neighbours): the watershed splits a smooth blend (a fillet, a
