@@ -7,6 +7,7 @@
 
 #include "../common/angles.h"
 #include "face_point_index.h"
+#include "plane_sums.h"
 
 #include <Eigen/Eigenvalues>
 
@@ -26,62 +27,11 @@ CreaseAngleParameters::validate() const
 
 namespace {
 
+using detail::acrossDirection;
 using detail::FacePointIndex;
-
-/** Points accumulated for a least-squares plane. */
-struct PlaneSums
-{
-  std::size_t count = 0;
-  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-  Eigen::Matrix3d outer = Eigen::Matrix3d::Zero();
-
-  /** p relative to a nearby origin, so the sums stay well conditioned. */
-  void add(const Eigen::Vector3d& p)
-  {
-    ++count;
-    sum += p;
-    outer += p * p.transpose();
-  }
-  Eigen::Vector3d mean() const { return sum / double(count); }
-  /** The unit normal of the least-squares plane (smallest principal axis). */
-  Eigen::Vector3d normal() const
-  {
-    const Eigen::Vector3d m = mean();
-    const Eigen::Matrix3d covariance = outer / double(count) - m * m.transpose();
-    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(covariance);
-    return solver.eigenvectors().col(0);
-  }
-};
-
-/** The turn between two sides, degrees (sideTurnDegrees()); their sums are relative to
- * the sample point. */
-double
-turnOfSides(const PlaneSums& a, const PlaneSums& b)
-{
-  if (a.count < 3 || b.count < 3)
-    return std::numeric_limits<double>::quiet_NaN();
-  const Eigen::Vector3d na = a.normal(), nb = b.normal();
-  Eigen::Vector3d ua = a.mean(), ub = b.mean(); // the sample point is the origin
-  ua -= ua.dot(na) * na;
-  ub -= ub.dot(nb) * nb;
-  // The line where the sides meet: where the planes cross; for nearly parallel
-  // planes (the cross product is then noise), across the way from one side to the
-  // other.
-  constexpr double kMinLineSine = 0.0175; // sin(1 degree)
-  Eigen::Vector3d line = na.cross(nb);
-  if (line.norm() <= kMinLineSine)
-    line = (na + (na.dot(nb) >= 0.0 ? 1.0 : -1.0) * nb).cross(ub - ua);
-  if (line.norm() > 0.0) { // keep only the directions across that line
-    const Eigen::Vector3d t = line.normalized();
-    ua -= ua.dot(t) * t;
-    ub -= ub.dot(t) * t;
-  }
-  const double la = ua.norm(), lb = ub.norm();
-  if (!(la > 0.0) || !(lb > 0.0))
-    return std::numeric_limits<double>::quiet_NaN();
-  const double cosine = std::clamp(ua.dot(ub) / (la * lb), -1.0, 1.0);
-  return 180.0 - std::acos(cosine) * 180.0 / detail::kPi;
-}
+using detail::PlaneSums;
+using detail::splitAcross;
+using detail::turnOfSides;
 
 /** One sample's measure: its two main faces (smaller label first) and their turn. */
 struct SampleTurn
@@ -102,7 +52,8 @@ constexpr double kScanMinSideShare = 0.3;
  * window, kContactScanWindows windows far, each position moved onto the plane of the
  * points around it and the direction turned into that plane), the largest turn
  * between the points before and after a position (sideTurnDegrees() of the window);
- * 0 when no position holds kMinSidePoints a side. */
+ * 0 when no position holds kMinSidePoints a side. first_count: the two faces' points
+ * within the window at `at` (the caller's own query there). */
 double
 sharpestTurnAlong(const FacePointIndex& index,
                   const std::vector<Eigen::Vector3d>& points,
@@ -110,7 +61,8 @@ sharpestTurnAlong(const FacePointIndex& index,
                   const Eigen::Vector3d& at,
                   Eigen::Vector3d direction,
                   double radius,
-                  const std::array<std::uint32_t, 2>& pair)
+                  const std::array<std::uint32_t, 2>& pair,
+                  std::size_t first_count)
 {
   double sharpest = 0.0;
   Eigen::Vector3d position = at;
@@ -119,10 +71,6 @@ sharpestTurnAlong(const FacePointIndex& index,
   // a window that holds much fewer points than the first reaches the faces' border
   // (another face, a hole, the cloud's end), where a side is a sliver whose plane is
   // noise: the walk ends there
-  std::size_t first_count = 0;
-  index.forEachWithin(at, radius, [&](std::uint32_t i) {
-    first_count += labels[i] == pair[0] || labels[i] == pair[1];
-  });
   for (int k = 1; k <= steps; ++k) {
     position += 0.5 * radius * direction;
     local.clear();
@@ -144,9 +92,7 @@ sharpestTurnAlong(const FacePointIndex& index,
       break;
     direction.normalize();
     PlaneSums before, after;
-    for (const Eigen::Vector3d& p : local)
-      (p - offset).dot(direction) > 0.0 ? after.add(p - offset)
-                                        : before.add(p - offset);
+    splitAcross(local, offset, direction, before, after);
     if (before.count < CreaseAngleParameters::kMinSidePoints ||
         after.count < CreaseAngleParameters::kMinSidePoints ||
         double(std::min(before.count, after.count)) <
@@ -195,20 +141,13 @@ measureSample(const FacePointIndex& index,
   // the sharpest turn across: an edge region on a chamfer narrower than the
   // separation has both faces' points on the chamfer beside it (a 45-degree chamfer
   // crease read 15 degrees), its creases lie a few cells away
-  PlaneSums both = sides[first];
-  both.count += sides[second].count;
-  both.sum += sides[second].sum;
-  both.outer += sides[second].outer;
-  const Eigen::Vector3d n = both.normal();
-  Eigen::Vector3d across = sides[first].mean() - sides[second].mean();
-  across -= across.dot(n) * n;
-  if (!(across.norm() > 0.0))
+  const Eigen::Vector3d across = acrossDirection(sides[first], sides[second]);
+  if (across.isZero())
     return turn;
-  across.normalize();
   for (const double way : {1.0, -1.0})
-    turn.degrees =
-      std::max(turn.degrees, sharpestTurnAlong(index, points, labels, at, way * across,
-                                               radius, {{first, second}}));
+    turn.degrees = std::max(
+      turn.degrees, sharpestTurnAlong(index, points, labels, at, way * across, radius,
+                                      {{first, second}}, n_first + n_second));
   return turn;
 }
 
@@ -229,7 +168,7 @@ contactTurn(const FacePointIndex& index,
 {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   std::vector<Eigen::Vector3d> local;
-  PlaneSums a, b, both;
+  PlaneSums a, b;
   index.forEachWithin(at, radius, [&](std::uint32_t i) {
     const Eigen::Vector3d p = points[i] - at;
     if (labels[i] == pair[0])
@@ -238,21 +177,16 @@ contactTurn(const FacePointIndex& index,
       b.add(p);
     else
       return;
-    both.add(p);
     local.push_back(p);
   });
   if (a.count < CreaseAngleParameters::kMinSidePoints ||
       b.count < CreaseAngleParameters::kMinSidePoints)
     return nan;
-  const Eigen::Vector3d n = both.normal();
-  Eigen::Vector3d across = a.mean() - b.mean();
-  across -= across.dot(n) * n;
-  if (!(across.norm() > 0.0))
+  const Eigen::Vector3d across = acrossDirection(a, b);
+  if (across.isZero())
     return nan;
-  across.normalize();
   PlaneSums side_a, side_b;
-  for (const Eigen::Vector3d& p : local)
-    (p.dot(across) > 0.0 ? side_a : side_b).add(p);
+  splitAcross(local, Eigen::Vector3d::Zero(), across, side_b, side_a);
   if (side_a.count < CreaseAngleParameters::kMinSidePoints ||
       side_b.count < CreaseAngleParameters::kMinSidePoints)
     return nan;
@@ -264,8 +198,9 @@ contactTurn(const FacePointIndex& index,
   // are sharp a few cells away.
   double sharpest = here;
   for (const double way : {1.0, -1.0})
-    sharpest = std::max(sharpest, sharpestTurnAlong(index, points, labels, at,
-                                                    way * across, radius, pair));
+    sharpest =
+      std::max(sharpest, sharpestTurnAlong(index, points, labels, at, way * across,
+                                           radius, pair, local.size()));
   return sharpest;
 }
 
