@@ -278,14 +278,10 @@ void
 VisibilityFeatureEstimation<PointInT, PointOutT>::buildGraph(
   Results& results, const Run& run, const PointCloudOut& output) const
 {
-  const std::vector<Region>& regions = results.segmentation.regions();
-  std::vector<FeatureClass> classes(regions.size());
-  for (std::size_t r = 0; r < regions.size(); ++r)
-    classes[r] = regions[r].feature_class;
   results.graph = TopologyGraph::build(results.band, results.segmentation.cellLabels(),
-                                       classes, run.graph);
+                                       results.segmentation.regionClasses(), run.graph);
   // Node geometry from the labelled output points themselves.
-  RegionPointGeometry geometry(regions.size());
+  RegionPointGeometry geometry(results.segmentation.regions().size());
   for (const PointOutT& p : output.points)
     geometry.add(p.label, Eigen::Vector3d(p.x, p.y, p.z));
   geometry.applyTo(results.graph);
@@ -305,20 +301,15 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::mergeShallowCreases(
     labels[i] = output[i].label;
   }
   const auto measure = [&]() {
-    std::vector<FeatureClass> classes;
-    for (const Region& region : results.segmentation.regions())
-      classes.push_back(region.feature_class);
-    return measureCreaseAngles(points, labels, classes, results.band.grid().cell_size,
+    return measureCreaseAngles(points, labels, results.segmentation.regionClasses(),
+                               results.band.grid().cell_size,
                                run.crease_angles.window_cells,
                                run.crease_angles.min_crease_angle);
   };
   std::vector<CreaseAngle> angles = measure();
-  std::vector<FeatureClass> classes;
-  for (const Region& region : results.segmentation.regions())
-    classes.push_back(region.feature_class);
-  const std::vector<CreaseAngle> contacts =
-    measureFaceContacts(results.band, results.segmentation.cellLabels(), points, labels,
-                        classes, run.crease_angles.window_cells);
+  const std::vector<CreaseAngle> contacts = measureFaceContacts(
+    results.band, results.segmentation.cellLabels(), points, labels,
+    results.segmentation.regionClasses(), run.crease_angles.window_cells);
   const std::vector<std::uint32_t> into = shallowCreaseMerge(
     results.graph, angles, contacts, run.crease_angles.min_crease_angle);
   bool merged = false;

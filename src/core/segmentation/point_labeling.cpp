@@ -8,25 +8,12 @@
 
 namespace visfeat {
 
-namespace {
-
-std::vector<FeatureClass>
-regionClasses(const FeatureSegmentation& segmentation)
-{
-  std::vector<FeatureClass> classes(segmentation.regions().size());
-  for (std::size_t r = 0; r < classes.size(); ++r)
-    classes[r] = segmentation.regions()[r].feature_class;
-  return classes;
-}
-
-} // namespace
-
 PointLabeling::PointLabeling(const VoxelBand& band,
                              const FeatureSegmentation& segmentation,
                              double point_feature_distance)
     : PointLabeling(band,
                     segmentation.cellLabels(),
-                    regionClasses(segmentation),
+                    segmentation.regionClasses(),
                     segmentation.skeleton(),
                     segmentation.skeletonCentres(),
                     segmentation.skeletonTangents(),

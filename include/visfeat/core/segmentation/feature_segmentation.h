@@ -135,6 +135,15 @@ public:
   /** \brief regions()[label - 1]. */
   const std::vector<Region>& regions() const { return regions_; }
 
+  /** \brief Per region (index label - 1), its class: regions()[r].feature_class. */
+  std::vector<FeatureClass> regionClasses() const
+  {
+    std::vector<FeatureClass> classes(regions_.size());
+    for (std::size_t r = 0; r < regions_.size(); ++r)
+      classes[r] = regions_[r].feature_class;
+    return classes;
+  }
+
   FeatureClass cellClass(CellId id) const
   {
     const std::uint32_t label = labels_[static_cast<std::size_t>(id)];
