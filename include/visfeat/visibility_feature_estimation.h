@@ -471,6 +471,13 @@ private:
                    const PointCloudIn& surface,
                    PointCloudOut& output) const;
   void buildGraph(Results& results, const Run& run, const PointCloudOut& output) const;
+  /** Relabels cells, points and the graph after FeatureSegmentation::mergeRegions
+   * (into: per label, the label it joins); false when nothing joins anything. */
+  bool applyRegionMerge(Results& results,
+                        const Run& run,
+                        PointCloudOut& output,
+                        const std::vector<std::uint32_t>& into) const;
+  void mergeStrayRegions(Results& results, const Run& run, PointCloudOut& output) const;
   void
   mergeShallowCreases(Results& results, const Run& run, PointCloudOut& output) const;
 

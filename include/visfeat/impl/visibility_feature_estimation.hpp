@@ -4,6 +4,7 @@
 #include <visfeat/core/common/error.h>
 #include <visfeat/core/common/memory_budget.h>
 #include <visfeat/core/common/threads.h>
+#include <visfeat/core/graph/stray_regions.h>
 #include <visfeat/core/grid/cloud_shape.h>
 #include <visfeat/core/segmentation/point_labeling.h>
 #include <visfeat/impl/resolution_estimation.hpp>
@@ -288,6 +289,40 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::buildGraph(
 }
 
 template <typename PointInT, typename PointOutT>
+bool
+VisibilityFeatureEstimation<PointInT, PointOutT>::applyRegionMerge(
+  Results& results,
+  const Run& run,
+  PointCloudOut& output,
+  const std::vector<std::uint32_t>& into) const
+{
+  bool merged = false;
+  for (std::size_t l = 1; l < into.size(); ++l)
+    merged = merged || into[l] != l;
+  if (!merged)
+    return false;
+  const std::vector<std::uint32_t> renumbered = results.segmentation.mergeRegions(into);
+  const std::vector<Region>& regions = results.segmentation.regions();
+  for (PointOutT& p : output.points) {
+    p.label = renumbered[p.label];
+    p.feature_class = static_cast<std::uint8_t>(
+      p.label == 0 ? FeatureClass::kNone : regions[p.label - 1].feature_class);
+  }
+  buildGraph(results, run, output);
+  return true;
+}
+
+template <typename PointInT, typename PointOutT>
+void
+VisibilityFeatureEstimation<PointInT, PointOutT>::mergeStrayRegions(
+  Results& results, const Run& run, PointCloudOut& output) const
+{
+  if (run.segmentation.raw || !run.segmentation.complete_regions)
+    return;
+  applyRegionMerge(results, run, output, strayRegionMerge(results.graph));
+}
+
+template <typename PointInT, typename PointOutT>
 void
 VisibilityFeatureEstimation<PointInT, PointOutT>::mergeShallowCreases(
   Results& results, const Run& run, PointCloudOut& output) const
@@ -296,10 +331,13 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::mergeShallowCreases(
     return;
   std::vector<Eigen::Vector3d> points(output.size());
   std::vector<std::uint32_t> labels(output.size());
-  for (std::size_t i = 0; i < output.size(); ++i) {
+  const auto readLabels = [&]() {
+    for (std::size_t i = 0; i < output.size(); ++i)
+      labels[i] = output[i].label;
+  };
+  for (std::size_t i = 0; i < output.size(); ++i)
     points[i] = output[i].getVector3fMap().template cast<double>();
-    labels[i] = output[i].label;
-  }
+  readLabels();
   const auto measure = [&]() {
     return measureCreaseAngles(points, labels, results.segmentation.regionClasses(),
                                results.band.grid().cell_size,
@@ -312,20 +350,8 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::mergeShallowCreases(
     results.segmentation.regionClasses(), run.crease_angles.window_cells);
   const std::vector<std::uint32_t> into = shallowCreaseMerge(
     results.graph, angles, contacts, run.crease_angles.min_crease_angle);
-  bool merged = false;
-  for (std::size_t l = 1; l < into.size(); ++l)
-    merged = merged || into[l] != l;
-  if (merged) { // relabel cells and points, then the graph and the angles again
-    const std::vector<std::uint32_t> renumbered =
-      results.segmentation.mergeRegions(into);
-    const std::vector<Region>& regions = results.segmentation.regions();
-    for (std::size_t i = 0; i < output.size(); ++i) {
-      const std::uint32_t label = renumbered[output[i].label];
-      output[i].label = labels[i] = label;
-      output[i].feature_class = static_cast<std::uint8_t>(
-        label == 0 ? FeatureClass::kNone : regions[label - 1].feature_class);
-    }
-    buildGraph(results, run, output);
+  if (applyRegionMerge(results, run, output, into)) { // the angles of the new edges
+    readLabels();
     angles = measure();
   }
   for (std::size_t r = 0; r < angles.size(); ++r)
@@ -385,6 +411,7 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::computeResults(
 
   start = Clock::now();
   buildGraph(results, run, output);
+  mergeStrayRegions(results, run, output);
   mergeShallowCreases(results, run, output);
   run.times.graph_ms = detail::millisecondsSince(start);
   checkResults(results, run);

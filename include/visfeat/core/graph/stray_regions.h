@@ -1,0 +1,42 @@
+#pragma once
+
+#include <visfeat/core/graph/topology_graph.h>
+
+#include <cstdint>
+#include <vector>
+
+namespace visfeat {
+
+/** \brief Regions that break the incidences of a B-rep, and the regions they join:
+ * vertices that end none of their edges, and face specks at a corner.
+ *
+ * **Stray vertices.** A B-rep vertex ends at least one of the edges it is joined to
+ * (all of them at a corner; the ending crease where one crease ends on another, a T).
+ * Vertex region v does not end edge region e when
+ * - e is joined to more than two vertex regions and v is not one of the two whose
+ *   centroids lie farthest apart: an edge has two ends, and the segmentation splits
+ *   edges where creases meet; or
+ * - v is the only vertex region of e and e the only edge region of v: a corner joins
+ *   two edges or more, and an edge with a single vertex is a closed loop (a hole's
+ *   rim), which has none.
+ * A vertex region that ends none of its edges (and has at least one) is a blob beside
+ * a crease, a broken tip of a face's core near a corner, or a piece of a rim: it joins
+ * its edge when it has one; with more, the one face joined to all of them (whose core
+ * tip broke off); it is kept when there is no such face.
+ *
+ * **Corner specks.** A face region joined to no edge and to one vertex region, smaller
+ * (in cells) than every face of that vertex's edges, is a speck at the corner's tip,
+ * not a face (a B-rep face is bounded by edges, or by none at all on a closed smooth
+ * surface): it joins the vertex (or what the vertex joins).
+ *
+ * Measured on the generated models at 20,000 points (the band filled between the
+ * points at 256 cells), rotations 4000-4020: 14 of 147 runs had such regions (the
+ * icosahedron 11 of 21: 1-3 stray vertices; a tetrahedron a speck); every one was an
+ * extra region and no true corner or face was one.
+ *
+ * \return per label (index 0 unused, size graph.size() + 1), the label it joins:
+ *         itself when kept; for FeatureSegmentation::mergeRegions.
+ */
+std::vector<std::uint32_t> strayRegionMerge(const TopologyGraph& graph);
+
+} // namespace visfeat

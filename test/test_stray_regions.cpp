@@ -1,0 +1,245 @@
+// strayRegionMerge: vertex regions along an edge instead of at its ends join their
+// edge or the face of their edges, face specks at a corner join the corner; ends of
+// edges, T-junctions, corners and faces bounded by edges stay.
+
+#include <visfeat/core/band/voxel_band.h>
+#include <visfeat/core/common/feature_class.h>
+#include <visfeat/core/graph/stray_regions.h>
+#include <visfeat/core/graph/topology_graph.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <numeric>
+
+namespace {
+
+using visfeat::CellCoord;
+using visfeat::CellId;
+using visfeat::FeatureClass;
+using visfeat::GridSpec;
+using visfeat::TopologyGraph;
+using visfeat::TopologyGraphParameters;
+using visfeat::VoxelBand;
+using Labels = std::vector<std::uint32_t>;
+
+constexpr FeatureClass kV = FeatureClass::kVertex;
+constexpr FeatureClass kE = FeatureClass::kEdge;
+constexpr FeatureClass kF = FeatureClass::kFace;
+
+/** A sheet of cells z = 2, x and y in [0, 40), labelled by `label` (x, y), and its
+ * graph with the default parameters. */
+struct Sheet
+{
+  VoxelBand band;
+  Labels labels;
+  TopologyGraph graph;
+
+  Sheet(const std::vector<FeatureClass>& classes,
+        const std::function<std::uint32_t(int x, int y)>& label)
+  {
+    GridSpec grid;
+    grid.origin = Eigen::Vector3d(-1.0, 0.5, 2.0);
+    grid.cell_size = 0.25;
+    grid.dims = Eigen::Vector3i(40, 40, 6);
+    std::vector<CellCoord> cells;
+    for (int y = 0; y < 40; ++y)
+      for (int x = 0; x < 40; ++x)
+        cells.emplace_back(x, y, 2);
+    VoxelBand::Options options;
+    options.repair = false;
+    band = VoxelBand::fromCells(grid, cells, options);
+    labels.resize(band.size());
+    for (std::size_t i = 0; i < band.size(); ++i) {
+      const CellCoord& c = band.coord(static_cast<CellId>(i));
+      labels[i] = label(c.x(), c.y());
+    }
+    graph = TopologyGraph::build(band, labels, classes, TopologyGraphParameters());
+  }
+
+  Labels strayMerge() const { return visfeat::strayRegionMerge(graph); }
+};
+
+Labels
+identity(std::size_t regions)
+{
+  Labels into(regions + 1);
+  std::iota(into.begin(), into.end(), 0u);
+  return into;
+}
+
+bool
+in(int v, int lo, int hi)
+{
+  return v >= lo && v <= hi;
+}
+
+/** A crease y 19..20 from corner V4 (x <= 3) to corner V5 (x >= 36) between faces F1
+ * (below) and F2 (above); a blob V6 beside it, in F1. */
+TEST(StrayRegions, ABlobBesideACreaseJoinsTheCrease)
+{
+  const std::vector<FeatureClass> classes{kF, kF, kE, kV, kV, kV};
+  const Sheet sheet(classes, [](int x, int y) -> std::uint32_t {
+    if (in(y, 19, 20))
+      return x <= 3 ? 4 : x >= 36 ? 5 : 3;
+    if (in(x, 17, 19) && in(y, 16, 18))
+      return 6;
+    return y < 19 ? 1 : 2;
+  });
+  ASSERT_EQ(sheet.graph.verticesOfEdge(3).size(), 3u); // the blob is joined to the crease
+  Labels expected = identity(6);
+  expected[6] = 3;
+  EXPECT_EQ(sheet.strayMerge(), expected);
+}
+
+/** Corner V4 at the origin with creases E2 (along x, y 0..1) to V5 and E3 (along y,
+ * x 0..1) to V6; face F1 fills the rest but for V7, a piece of its tip beside the
+ * corner touching both creases: it joins F1, the face of both. */
+TEST(StrayRegions, ABrokenFaceTipBesideACornerJoinsItsFace)
+{
+  const std::vector<FeatureClass> classes{kF, kE, kE, kV, kV, kV, kV};
+  const Sheet sheet(classes, [](int x, int y) -> std::uint32_t {
+    if (x <= 1 && y <= 1)
+      return 4;
+    if (y <= 1)
+      return x >= 36 ? 5 : 2;
+    if (x <= 1)
+      return y >= 36 ? 6 : 3;
+    if (in(x, 2, 4) && in(y, 2, 4))
+      return 7;
+    return 1;
+  });
+  ASSERT_EQ(sheet.graph.verticesOfEdge(2).size(), 3u);
+  ASSERT_EQ(sheet.graph.verticesOfEdge(3).size(), 3u);
+  Labels expected = identity(7);
+  expected[7] = 1;
+  EXPECT_EQ(sheet.strayMerge(), expected);
+}
+
+/** Crease E3 (y 19..20) from V4 to V5 between F1 and the faces F2 | F7 above it;
+ * crease E8 (x 19..20, y 23..35) between F2 and F7 ends at V6 on E3 and at V9 at the
+ * sheet's border: V6 lies inside E3 but is an end of E8, so it stays, and so does
+ * every other vertex: nothing joins. */
+TEST(StrayRegions, TheEndOfACreaseMeetingAnotherStays)
+{
+  const std::vector<FeatureClass> classes{kF, kF, kE, kV, kV, kV, kF, kE, kV};
+  const Sheet sheet(classes, [](int x, int y) -> std::uint32_t {
+    if (in(y, 19, 20))
+      return x <= 3 ? 4 : x >= 36 ? 5 : 3;
+    if (y < 19)
+      return 1;
+    if (in(x, 19, 20))
+      return y <= 22 ? 6 : y >= 36 ? 9 : 8;
+    return x < 19 ? 2 : 7;
+  });
+  ASSERT_EQ(sheet.graph.verticesOfEdge(3).size(), 3u);
+  ASSERT_EQ(sheet.graph.verticesOfEdge(8).size(), 2u);
+  EXPECT_EQ(sheet.strayMerge(), identity(9));
+}
+
+/** Two blobs beside one crease: both join it; its ends are still the two corners
+ * farthest apart. A vertex joined to no edge is left alone. */
+TEST(StrayRegions, SeveralBlobsOnOneCreaseAndVerticesWithoutEdges)
+{
+  const std::vector<FeatureClass> classes{kF, kF, kE, kV, kV, kV, kV, kV};
+  const Sheet sheet(classes, [](int x, int y) -> std::uint32_t {
+    if (in(y, 19, 20))
+      return x <= 3 ? 4 : x >= 36 ? 5 : 3;
+    if (in(x, 8, 10) && in(y, 21, 22))
+      return 6;
+    if (in(x, 28, 30) && in(y, 17, 18))
+      return 7;
+    if (in(x, 20, 22) && in(y, 5, 7))
+      return 8; // far from every edge
+    return y < 19 ? 1 : 2;
+  });
+  ASSERT_EQ(sheet.graph.verticesOfEdge(3).size(), 4u);
+  Labels expected = identity(8);
+  expected[6] = expected[7] = 3;
+  EXPECT_EQ(sheet.strayMerge(), expected);
+}
+
+/** A hole's rim: the ring of cells at L-infinity distance 8..10 from (19.5, 19.5) is
+ * edge E3 between the outer face F1 and the inner face F2, a closed loop with no
+ * corner; V4, a piece of the ring, is its only vertex and joins it. */
+TEST(StrayRegions, APieceOfALoopJoinsTheLoop)
+{
+  const std::vector<FeatureClass> classes{kF, kF, kE, kV};
+  const Sheet sheet(classes, [](int x, int y) -> std::uint32_t {
+    const double r = std::max(std::abs(x - 19.5), std::abs(y - 19.5));
+    if (r < 8.0)
+      return 2;
+    if (r > 10.0)
+      return 1;
+    return in(x, 17, 22) && y < 19 ? 4 : 3;
+  });
+  ASSERT_EQ(sheet.graph.verticesOfEdge(3).size(), 1u);
+  Labels expected = identity(4);
+  expected[4] = 3;
+  EXPECT_EQ(sheet.strayMerge(), expected);
+}
+
+/** A crease that ends in the middle of the sheet (where its faces F1 | F2 meet
+ * directly beyond it), with corners at both ends: both stay. A crease with one
+ * corner that joins two creases: it stays too. */
+TEST(StrayRegions, TheEndOfADanglingCreaseStays)
+{
+  const std::vector<FeatureClass> classes{kF, kF, kE, kV, kV};
+  const Sheet sheet(classes, [](int x, int y) -> std::uint32_t {
+    if (in(y, 19, 20) && x <= 25)
+      return x <= 3 ? 5 : x >= 23 ? 4 : 3;
+    return y < 19 || (y <= 20 && x <= 30) ? 1 : 2;
+  });
+  ASSERT_EQ(sheet.graph.verticesOfEdge(3).size(), 2u);
+  EXPECT_EQ(sheet.strayMerge(), identity(5));
+
+  // E3 along y 19..20 ending at V4 (x 23..25) where E5 (x 23..25, y <= 18) starts:
+  // V4 is E3's only vertex but joins two edges
+  const std::vector<FeatureClass> l_classes{kF, kF, kE, kV, kE};
+  const Sheet l_shape(l_classes, [](int x, int y) -> std::uint32_t {
+    if (in(y, 19, 20) && x <= 25)
+      return x >= 23 ? 4 : 3;
+    if (in(x, 23, 25) && y <= 18)
+      return 5;
+    return y > 20 || x > 25 ? 2 : 1;
+  });
+  ASSERT_EQ(l_shape.graph.verticesOfEdge(3).size(), 1u);
+  ASSERT_EQ(l_shape.graph.neighbours(4, kE).size(), 2u);
+  EXPECT_EQ(l_shape.strayMerge(), identity(5));
+}
+
+/** Corner V4 (x, y <= 3) ends creases E2 (y 0..1) and E3 (x 0..1) between face F1
+ * and the faces beyond them; F5, a few cells at the corner's tip joined to V4 alone,
+ * joins it. A face as large as the corner's faces, joined to V4 alone, stays. */
+TEST(StrayRegions, AFaceSpeckAtACornerJoinsTheCorner)
+{
+  const auto layout = [](int speck_side) {
+    return [speck_side](int x, int y) -> std::uint32_t {
+      if (x <= 3 && y <= 3)
+        return 4;
+      if (in(x, 4, 3 + speck_side) && in(y, 4, 3 + speck_side))
+        return 5; // beyond the corner's tip, diagonally: away from the creases
+      if (y <= 1)
+        return x >= 36 ? 6 : 2;
+      if (x <= 1)
+        return y >= 36 ? 7 : 3;
+      return 1;
+    };
+  };
+  const std::vector<FeatureClass> classes{kF, kE, kE, kV, kF, kV, kV};
+  const Sheet speck(classes, layout(2));
+  ASSERT_TRUE(speck.graph.neighbours(5, kE).empty());
+  ASSERT_EQ(speck.graph.neighbours(5, kV), std::vector<std::uint32_t>{4});
+  Labels expected = identity(7);
+  expected[5] = 4;
+  EXPECT_EQ(speck.strayMerge(), expected);
+
+  // 34 x 34 cells: larger than F1 (the rest of the sheet, about 290 cells)
+  const Sheet large(classes, layout(34));
+  ASSERT_TRUE(large.graph.neighbours(5, kE).empty());
+  EXPECT_EQ(large.strayMerge(), identity(7));
+}
+
+} // namespace
