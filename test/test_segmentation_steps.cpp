@@ -261,6 +261,28 @@ TEST(SegmentationSteps, TheCornerIsWhereTheEdgeLinesMeet)
   EXPECT_FLOAT_EQ(std::abs(s.skeletonTangents()[std::size_t(drawn)].y()), 1.f);
 }
 
+// The T of tSheet without its corner core: three edges whose cores stop 3 cells short
+// of (10, 10), where nothing else marks the corner.
+TEST(SegmentationSteps, ACornerWithoutACoreIsWhereThreeFreeEdgeEndsMeet)
+{
+  const auto tWithoutCorner = [](int gap) {
+    return creaseSheet(21, 21, {{10, 0, 10, 10}, {0, 10, 20, 10}},
+                       {{10, 0, 10, 10 - gap}, {0, 10, 10 - gap, 10}, {10 + gap, 10, 20, 10}});
+  };
+  const Sheet sheet = tWithoutCorner(3);
+  const auto s = FeatureSegmentation::compute(sheet.band, sheet.map, smallParameters());
+  EXPECT_EQ(s.classCounts(), (std::array<std::size_t, 4>{0, 1, 3, 3}));
+  EXPECT_EQ(classAt(sheet, s, 10, 10), FeatureClass::kVertex);
+  EXPECT_EQ(classAt(sheet, s, 10, 8), FeatureClass::kEdge); // drawn to the corner
+  EXPECT_EQ(classAt(sheet, s, 12, 10), FeatureClass::kEdge);
+
+  // Ends farther apart than vertex_reach (5) are not grouped: no corner.
+  const Sheet far = tWithoutCorner(5);
+  const auto f = FeatureSegmentation::compute(far.band, far.map, smallParameters());
+  EXPECT_EQ(f.classCounts()[1], 0u);
+  EXPECT_EQ(f.classCounts()[2], 3u);
+}
+
 // An edge A|C (y = 20) in three pieces: x 0..16, a one-cell core at (20, 20), x
 // 24..40. Above, face A holds an island B, bounded by the edge loop x in {2, 14}, y in
 // {0, 12}, 14 steps from the middle core.

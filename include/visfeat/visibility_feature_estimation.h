@@ -472,14 +472,19 @@ private:
                    PointCloudOut& output) const;
   void buildGraph(Results& results, const Run& run, const PointCloudOut& output) const;
   /** Relabels cells, points and the graph after FeatureSegmentation::mergeRegions
-   * (into: per label, the label it joins); false when nothing joins anything. */
-  bool applyRegionMerge(Results& results,
-                        const Run& run,
-                        PointCloudOut& output,
-                        const std::vector<std::uint32_t>& into) const;
-  void mergeStrayRegions(Results& results, const Run& run, PointCloudOut& output) const;
-  void
+   * (into: per label, the label it joins); returns mergeRegions' renumbering, empty
+   * when nothing joins anything. */
+  std::vector<std::uint32_t> applyRegionMerge(Results& results,
+                                              const Run& run,
+                                              PointCloudOut& output,
+                                              const std::vector<std::uint32_t>& into) const;
+  /** The minimum crease angle's merge; returns the crease angles of the regions it
+   * leaves (per label - 1). */
+  std::vector<CreaseAngle>
   mergeShallowCreases(Results& results, const Run& run, PointCloudOut& output) const;
+  /** After the graph: the crease rule, then the stray regions (strayRegionMerge);
+   * each edge's crease angle into the graph. */
+  void cleanUpRegions(Results& results, const Run& run, PointCloudOut& output) const;
 
   bool fail(const std::string& message);
 

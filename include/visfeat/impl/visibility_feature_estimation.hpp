@@ -289,7 +289,7 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::buildGraph(
 }
 
 template <typename PointInT, typename PointOutT>
-bool
+std::vector<std::uint32_t>
 VisibilityFeatureEstimation<PointInT, PointOutT>::applyRegionMerge(
   Results& results,
   const Run& run,
@@ -300,8 +300,8 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::applyRegionMerge(
   for (std::size_t l = 1; l < into.size(); ++l)
     merged = merged || into[l] != l;
   if (!merged)
-    return false;
-  const std::vector<std::uint32_t> renumbered = results.segmentation.mergeRegions(into);
+    return {};
+  std::vector<std::uint32_t> renumbered = results.segmentation.mergeRegions(into);
   const std::vector<Region>& regions = results.segmentation.regions();
   for (PointOutT& p : output.points) {
     p.label = renumbered[p.label];
@@ -309,26 +309,14 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::applyRegionMerge(
       p.label == 0 ? FeatureClass::kNone : regions[p.label - 1].feature_class);
   }
   buildGraph(results, run, output);
-  return true;
+  return renumbered;
 }
 
 template <typename PointInT, typename PointOutT>
-void
-VisibilityFeatureEstimation<PointInT, PointOutT>::mergeStrayRegions(
-  Results& results, const Run& run, PointCloudOut& output) const
-{
-  if (run.segmentation.raw || !run.segmentation.complete_regions)
-    return;
-  applyRegionMerge(results, run, output, strayRegionMerge(results.graph));
-}
-
-template <typename PointInT, typename PointOutT>
-void
+std::vector<CreaseAngle>
 VisibilityFeatureEstimation<PointInT, PointOutT>::mergeShallowCreases(
   Results& results, const Run& run, PointCloudOut& output) const
 {
-  if (run.segmentation.raw || !run.segmentation.complete_regions)
-    return;
   std::vector<Eigen::Vector3d> points(output.size());
   std::vector<std::uint32_t> labels(output.size());
   const auto readLabels = [&]() {
@@ -350,14 +338,34 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::mergeShallowCreases(
     results.segmentation.regionClasses(), run.crease_angles.window_cells);
   const std::vector<std::uint32_t> into = shallowCreaseMerge(
     results.graph, angles, contacts, run.crease_angles.min_crease_angle);
-  if (applyRegionMerge(results, run, output, into)) { // the angles of the new edges
+  if (!applyRegionMerge(results, run, output, into).empty()) { // the new edges' angles
     readLabels();
     angles = measure();
   }
-  for (std::size_t r = 0; r < angles.size(); ++r)
-    if (std::isfinite(angles[r].degrees))
-      results.graph.setCreaseAngle(static_cast<std::uint32_t>(r + 1),
-                                   angles[r].degrees);
+  return angles;
+}
+
+template <typename PointInT, typename PointOutT>
+void
+VisibilityFeatureEstimation<PointInT, PointOutT>::cleanUpRegions(
+  Results& results, const Run& run, PointCloudOut& output) const
+{
+  if (run.segmentation.raw || !run.segmentation.complete_regions)
+    return;
+  std::vector<CreaseAngle> angles = mergeShallowCreases(results, run, output);
+  // Stray regions after the crease rule: a face speck that the rule joins to the face
+  // it touches is not one (the faceted boss: a 500-cell facet piece at a corner).
+  const std::vector<std::uint32_t> renumbered =
+    applyRegionMerge(results, run, output, strayRegionMerge(results.graph));
+  // stray regions join edges, faces or vertices, and no edge joins anything: each
+  // edge keeps its angle under its new label
+  for (std::size_t r = 0; r < angles.size(); ++r) {
+    const auto label = static_cast<std::uint32_t>(r + 1);
+    const std::uint32_t now = renumbered.empty() ? label : renumbered[label];
+    if (std::isfinite(angles[r].degrees) && now != 0 &&
+        results.graph.node(now).feature_class == FeatureClass::kEdge)
+      results.graph.setCreaseAngle(now, angles[r].degrees);
+  }
 }
 
 template <typename PointInT, typename PointOutT>
@@ -411,8 +419,7 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::computeResults(
 
   start = Clock::now();
   buildGraph(results, run, output);
-  mergeStrayRegions(results, run, output);
-  mergeShallowCreases(results, run, output);
+  cleanUpRegions(results, run, output);
   run.times.graph_ms = detail::millisecondsSince(start);
   checkResults(results, run);
   return results;

@@ -38,6 +38,15 @@ constexpr double kEdgeEndRun = 3.0;
  * drawing (145ed0d), not measured separately. */
 constexpr double kCornerCells = 1.5;
 
+/** Free ends of straight edges (linked to no vertex) give a corner of their own when
+ * at least this many edges' ends lie within vertex_reach of each other and of their
+ * lines' meeting point: a corner whose radius stayed below min_radius everywhere, so
+ * that no core (and no vertex candidate) formed there. Three: the generated models'
+ * corners join three edges or more, and two ends near each other are as often the two
+ * pieces of one crease broken by a narrow face. Found on the U prism (20,000 points,
+ * rotation 4004: three edges ended 6-10 cells short of a corner without a region). */
+constexpr std::size_t kMinFreeCornerEdges = 3;
+
 /** Shortest segment length divided by, against a segment of length 0. Numeric guard.
  */
 constexpr double kMinSegmentLength = 1e-9;
@@ -61,13 +70,10 @@ straightEdgesOf(const ThinningState& state)
   return straight_edges_of;
 }
 
-/** The point nearest to the lines of a vertex's straight edges (least squares), in
- * cell index units; none when the lines are nearly parallel, when it lies farther
- * than vertex_reach from the vertex's cores, or outside the band. */
+/** The point nearest to the lines of straight edges (least squares), in cell index
+ * units; none when the lines are nearly parallel. */
 std::optional<Eigen::Vector3d>
-cornerOf(const ThinningState& state,
-         std::uint32_t vertex,
-         const std::vector<std::uint32_t>& edges)
+meetingPoint(const ThinningState& state, const std::vector<std::uint32_t>& edges)
 {
   Eigen::Matrix3d a = Eigen::Matrix3d::Zero();
   Eigen::Vector3d b = Eigen::Vector3d::Zero();
@@ -81,7 +87,21 @@ cornerOf(const ThinningState& state,
   if (Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(a).eigenvalues()(0) <
       kMinCornerConditioning)
     return std::nullopt;
-  const Eigen::Vector3d corner = a.ldlt().solve(b);
+  return Eigen::Vector3d(a.ldlt().solve(b));
+}
+
+/** The point nearest to the lines of a vertex's straight edges (meetingPoint); none
+ * when the lines are nearly parallel, when it lies farther than vertex_reach from the
+ * vertex's cores, or outside the band. */
+std::optional<Eigen::Vector3d>
+cornerOf(const ThinningState& state,
+         std::uint32_t vertex,
+         const std::vector<std::uint32_t>& edges)
+{
+  const std::optional<Eigen::Vector3d> meeting = meetingPoint(state, edges);
+  if (!meeting)
+    return std::nullopt;
+  const Eigen::Vector3d corner = *meeting;
   double to_vertex = std::numeric_limits<double>::infinity();
   for (const CellId c : valueOrEmpty(state.vertex_cores, vertex))
     to_vertex =
@@ -175,6 +195,74 @@ centreStraightEdges(ThinningState& state)
         state.setCentre(c, line.point + d.dot(line.direction) * line.direction,
                         line.direction);
       }
+}
+
+void
+cornersAtFreeEnds(ThinningState& state)
+{
+  struct FreeEnd
+  {
+    std::uint32_t edge;
+    int k;
+  };
+  std::vector<FreeEnd> free;
+  for (const auto& [edge, e] : state.ends)
+    for (int k = 0; k < 2; ++k)
+      if (e.vertex[static_cast<std::size_t>(k)] == 0 && isStraightEdge(state, edge))
+        free.push_back({edge, k});
+  if (free.size() < kMinFreeCornerEdges)
+    return;
+  const auto endCell = [&](const FreeEnd& f) {
+    return state.ends.at(f.edge).cell[static_cast<std::size_t>(f.k)];
+  };
+  // groups of ends of different edges within vertex_reach of one another (union-find)
+  const double reach = static_cast<double>(state.parameters.vertex_reach);
+  std::vector<std::size_t> root(free.size());
+  for (std::size_t i = 0; i < free.size(); ++i)
+    root[i] = i;
+  const auto find = [&](std::size_t i) {
+    while (root[i] != i)
+      i = root[i] = root[root[i]];
+    return i;
+  };
+  for (std::size_t i = 0; i < free.size(); ++i)
+    for (std::size_t j = i + 1; j < free.size(); ++j)
+      if (free[i].edge != free[j].edge &&
+          state.distance(endCell(free[i]), endCell(free[j])) <= reach)
+        root[find(i)] = find(j);
+  for (std::size_t g = 0; g < free.size(); ++g) {
+    if (find(g) != g)
+      continue;
+    std::vector<FreeEnd> ends;
+    std::vector<std::uint32_t> edges;
+    for (std::size_t i = 0; i < free.size(); ++i)
+      if (find(i) == g) {
+        ends.push_back(free[i]);
+        edges.push_back(free[i].edge);
+      }
+    std::sort(edges.begin(), edges.end());
+    if (edges.size() < kMinFreeCornerEdges ||
+        std::adjacent_find(edges.begin(), edges.end()) != edges.end())
+      continue; // too few, or both ends of one edge
+    const std::optional<Eigen::Vector3d> corner = meetingPoint(state, edges);
+    if (!corner)
+      continue;
+    const CellId at = state.nearestCell(*corner);
+    bool near = at != kNoCell;
+    for (const FreeEnd& f : ends)
+      near = near && (state.band.coord(endCell(f)).cast<double>() - *corner).norm() <= reach;
+    if (!near)
+      continue;
+    // a new label, after the cores' (numberRegions renumbers them all)
+    const auto vertex = static_cast<std::uint32_t>(state.cls.size());
+    state.cls.push_back(FeatureClass::kVertex);
+    state.labels[static_cast<std::size_t>(at)] = vertex;
+    state.vertex_cores[vertex] = {at};
+    for (const FreeEnd& f : ends) {
+      state.ends.at(f.edge).vertex[static_cast<std::size_t>(f.k)] = vertex;
+      state.pairs.emplace(vertex, f.edge);
+    }
+  }
 }
 
 void

@@ -98,6 +98,7 @@ FeatureSegmentation::compute(const VoxelBand& band,
       findVertexEdgePairs(thinning);
       if (splitMergedCorners(thinning))
         findVertexEdgePairs(thinning);
+      cornersAtFreeEnds(thinning);
       centreStraightEdges(thinning);
       drawCorners(thinning);
       traceRidgePaths(thinning);

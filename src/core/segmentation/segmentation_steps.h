@@ -74,6 +74,13 @@ bool splitMergedCorners(ThinningState& state);
 
 // --- corner_drawing.cpp: step 5, corners from edge lines -----------------------------
 
+/** \brief A corner without a region: where the free ends (linked to no vertex) of
+ * kMinFreeCornerEdges or more straight edges lie within vertex_reach of each other
+ * and of their lines' meeting point, a new vertex (a label after the cores') takes the
+ * band cell nearest to that point, and those ends link to it; drawCorners then draws
+ * them to it. */
+void cornersAtFreeEnds(ThinningState& state);
+
 /** \brief On a straight edge (>= kMinLineCells core cells, narrow), the middle of the
  * skeleton is its line: each core cell's centre is its projection on the line. */
 void centreStraightEdges(ThinningState& state);
