@@ -29,8 +29,8 @@ constexpr FeatureClass kV = FeatureClass::kVertex;
 constexpr FeatureClass kE = FeatureClass::kEdge;
 constexpr FeatureClass kF = FeatureClass::kFace;
 
-/** A sheet of cells z = 2, x and y in [0, 40), labelled by `label` (x, y), and its
- * graph with the default parameters. */
+/** A sheet of cells z = 2, x and y in [0, side), labelled by `label` (x, y), and its
+ * graph with the default parameters but the dilation radius. */
 struct Sheet
 {
   VoxelBand band;
@@ -38,15 +38,17 @@ struct Sheet
   TopologyGraph graph;
 
   Sheet(const std::vector<FeatureClass>& classes,
-        const std::function<std::uint32_t(int x, int y)>& label)
+        const std::function<std::uint32_t(int x, int y)>& label,
+        int dilation_radius = TopologyGraphParameters::kDefaultDilationRadius,
+        int side = 40)
   {
     GridSpec grid;
     grid.origin = Eigen::Vector3d(-1.0, 0.5, 2.0);
     grid.cell_size = 0.25;
-    grid.dims = Eigen::Vector3i(40, 40, 6);
+    grid.dims = Eigen::Vector3i(side, side, 6);
     std::vector<CellCoord> cells;
-    for (int y = 0; y < 40; ++y)
-      for (int x = 0; x < 40; ++x)
+    for (int y = 0; y < side; ++y)
+      for (int x = 0; x < side; ++x)
         cells.emplace_back(x, y, 2);
     VoxelBand::Options options;
     options.repair = false;
@@ -56,7 +58,9 @@ struct Sheet
       const CellCoord& c = band.coord(static_cast<CellId>(i));
       labels[i] = label(c.x(), c.y());
     }
-    graph = TopologyGraph::build(band, labels, classes, TopologyGraphParameters());
+    TopologyGraphParameters parameters;
+    parameters.dilation_radius = dilation_radius;
+    graph = TopologyGraph::build(band, labels, classes, parameters);
   }
 
   Labels strayMerge() const { return visfeat::strayRegionMerge(graph); }
@@ -94,20 +98,20 @@ TEST(StrayRegions, ABlobBesideACreaseJoinsTheCrease)
   EXPECT_EQ(sheet.strayMerge(), expected);
 }
 
-/** Corner V4 at the origin with creases E2 (along x, y 0..1) to V5 and E3 (along y,
+/** Corner V4 (x, y <= 2) with creases E2 (along x, y 0..1) to V5 and E3 (along y,
  * x 0..1) to V6; face F1 fills the rest but for V7, a piece of its tip beside the
- * corner touching both creases: it joins F1, the face of both. */
+ * corner (smaller than it) touching both creases: it joins F1, the face of both. */
 TEST(StrayRegions, ABrokenFaceTipBesideACornerJoinsItsFace)
 {
   const std::vector<FeatureClass> classes{kF, kE, kE, kV, kV, kV, kV};
   const Sheet sheet(classes, [](int x, int y) -> std::uint32_t {
-    if (x <= 1 && y <= 1)
+    if (x <= 2 && y <= 2)
       return 4;
     if (y <= 1)
       return x >= 36 ? 5 : 2;
     if (x <= 1)
       return y >= 36 ? 6 : 3;
-    if (in(x, 2, 4) && in(y, 2, 4))
+    if (in(x, 3, 4) && in(y, 3, 4))
       return 7;
     return 1;
   });
@@ -139,8 +143,7 @@ TEST(StrayRegions, TheEndOfACreaseMeetingAnotherStays)
   EXPECT_EQ(sheet.strayMerge(), identity(9));
 }
 
-/** Two blobs beside one crease: both join it; its ends are still the two corners
- * farthest apart. A vertex joined to no edge is left alone. */
+/** Two blobs beside one crease: both join it; its ends are still the two corners. A vertex joined to no edge is left alone. */
 TEST(StrayRegions, SeveralBlobsOnOneCreaseAndVerticesWithoutEdges)
 {
   const std::vector<FeatureClass> classes{kF, kF, kE, kV, kV, kV, kV, kV};
@@ -240,6 +243,37 @@ TEST(StrayRegions, AFaceSpeckAtACornerJoinsTheCorner)
   const Sheet large(classes, layout(34));
   ASSERT_TRUE(large.graph.neighbours(5, kE).empty());
   EXPECT_EQ(large.strayMerge(), identity(7));
+}
+
+/** A cross of creases from corner V1 (x, y 39..40) to V2..V5 at the sides of an 80 x
+ * 80 sheet, between the quadrant faces F10..F13; a one-cell blob V14 diagonally
+ * beside V1, at (38, 38), is joined (dilation radius 4) to all four creases, which
+ * have no face in common. Beyond V1 as seen from the far ends of the upper and right
+ * creases, it lies 4% farther from them than V1 (a tie: V1, the larger region, is
+ * their end): it joins V1, the vertex they all end at. */
+TEST(StrayRegions, ABlobBesideACornersCreasesJoinsTheCorner)
+{
+  std::vector<FeatureClass> classes{kV, kV, kV, kV, kV, kE, kE, kE, kE,
+                                    kF, kF, kF, kF, kV};
+  const Sheet sheet(
+    classes,
+    [](int x, int y) -> std::uint32_t {
+      const bool mid_x = in(x, 39, 40), mid_y = in(y, 39, 40);
+      if (mid_x && mid_y)
+        return 1;
+      if (x == 38 && y == 38)
+        return 14;
+      if (mid_y) // left and right arms
+        return x <= 3 ? 2 : x >= 76 ? 3 : x < 39 ? 6 : 7;
+      if (mid_x) // lower and upper arms
+        return y <= 3 ? 4 : y >= 76 ? 5 : y < 39 ? 8 : 9;
+      return (x < 39 ? 10 : 11) + (y < 39 ? 0 : 2);
+    },
+    4, 80);
+  ASSERT_EQ(sheet.graph.neighbours(14, kE).size(), 4u);
+  Labels expected = identity(14);
+  expected[14] = 1;
+  EXPECT_EQ(sheet.strayMerge(), expected);
 }
 
 } // namespace

@@ -13,16 +13,18 @@ namespace visfeat {
  * **Stray vertices.** A B-rep vertex ends at least one of the edges it is joined to
  * (all of them at a corner; the ending crease where one crease ends on another, a T).
  * Vertex region v does not end edge region e when
- * - e is joined to more than two vertex regions and v is not one of the two whose
- *   centroids lie farthest apart: an edge has two ends, and the segmentation splits
- *   edges where creases meet; or
+ * - e is joined to more than two vertex regions and v is not one of its two ends (an
+ *   edge has two ends, and the segmentation splits edges where creases meet): the two
+ *   whose centroids lie farthest apart, or among pairs nearly as far apart (within 5%)
+ *   the one whose smaller region is largest; or
  * - v is the only vertex region of e and e the only edge region of v: a corner joins
  *   two edges or more, and an edge with a single vertex is a closed loop (a hole's
  *   rim), which has none.
  * A vertex region that ends none of its edges (and has at least one) is a blob beside
  * a crease, a broken tip of a face's core near a corner, or a piece of a rim: it joins
  * its edge when it has one; with more, the one face joined to all of them (whose core
- * tip broke off); it is kept when there is no such face.
+ * tip broke off), else the one vertex that most of them (two or more) are joined to
+ * (the corner it lies beside); it is kept when there is none.
  *
  * **Corner specks.** A face region joined to no edge and to one vertex region, smaller
  * (in cells) than every face of that vertex's edges, is a speck at the corner's tip,
