@@ -266,8 +266,9 @@ TEST(SegmentationSteps, TheCornerIsWhereTheEdgeLinesMeet)
 TEST(SegmentationSteps, ACornerWithoutACoreIsWhereThreeFreeEdgeEndsMeet)
 {
   const auto tWithoutCorner = [](int gap) {
-    return creaseSheet(21, 21, {{10, 0, 10, 10}, {0, 10, 20, 10}},
-                       {{10, 0, 10, 10 - gap}, {0, 10, 10 - gap, 10}, {10 + gap, 10, 20, 10}});
+    return creaseSheet(
+      21, 21, {{10, 0, 10, 10}, {0, 10, 20, 10}},
+      {{10, 0, 10, 10 - gap}, {0, 10, 10 - gap, 10}, {10 + gap, 10, 20, 10}});
   };
   const Sheet sheet = tWithoutCorner(3);
   const auto s = FeatureSegmentation::compute(sheet.band, sheet.map, smallParameters());

@@ -39,7 +39,8 @@ using Estimator =
  * edge split in two with an extra corner (icosahedron 10,000), an extra face and edge
  * (tetrahedron 10,000), an edge-face arc to a third face and a missing corner arc
  * (icosahedron 10,000, U-prism 20,000). The run is deterministic (any thread count),
- * so this is the measured figure: a guard against losing ground, not the issue's bar. */
+ * so this is the measured figure: a guard against losing ground, not the issue's bar.
+ */
 constexpr int kMinExactCases = 56;
 
 struct Outcome

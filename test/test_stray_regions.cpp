@@ -92,7 +92,8 @@ TEST(StrayRegions, ABlobBesideACreaseJoinsTheCrease)
       return 6;
     return y < 19 ? 1 : 2;
   });
-  ASSERT_EQ(sheet.graph.verticesOfEdge(3).size(), 3u); // the blob is joined to the crease
+  ASSERT_EQ(sheet.graph.verticesOfEdge(3).size(),
+            3u); // the blob is joined to the crease
   Labels expected = identity(6);
   expected[6] = 3;
   EXPECT_EQ(sheet.strayMerge(), expected);
@@ -143,7 +144,8 @@ TEST(StrayRegions, TheEndOfACreaseMeetingAnotherStays)
   EXPECT_EQ(sheet.strayMerge(), identity(9));
 }
 
-/** Two blobs beside one crease: both join it; its ends are still the two corners. A vertex joined to no edge is left alone. */
+/** Two blobs beside one crease: both join it; its ends are still the two corners. A
+ * vertex joined to no edge is left alone. */
 TEST(StrayRegions, SeveralBlobsOnOneCreaseAndVerticesWithoutEdges)
 {
   const std::vector<FeatureClass> classes{kF, kF, kE, kV, kV, kV, kV, kV};
@@ -253,8 +255,8 @@ TEST(StrayRegions, AFaceSpeckAtACornerJoinsTheCorner)
  * their end): it joins V1, the vertex they all end at. */
 TEST(StrayRegions, ABlobBesideACornersCreasesJoinsTheCorner)
 {
-  std::vector<FeatureClass> classes{kV, kV, kV, kV, kV, kE, kE, kE, kE,
-                                    kF, kF, kF, kF, kV};
+  std::vector<FeatureClass> classes{kV, kV, kV, kV, kV, kE, kE,
+                                    kE, kE, kF, kF, kF, kF, kV};
   const Sheet sheet(
     classes,
     [](int x, int y) -> std::uint32_t {

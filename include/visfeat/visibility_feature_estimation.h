@@ -474,10 +474,11 @@ private:
   /** Relabels cells, points and the graph after FeatureSegmentation::mergeRegions
    * (into: per label, the label it joins); returns mergeRegions' renumbering, empty
    * when nothing joins anything. */
-  std::vector<std::uint32_t> applyRegionMerge(Results& results,
-                                              const Run& run,
-                                              PointCloudOut& output,
-                                              const std::vector<std::uint32_t>& into) const;
+  std::vector<std::uint32_t>
+  applyRegionMerge(Results& results,
+                   const Run& run,
+                   PointCloudOut& output,
+                   const std::vector<std::uint32_t>& into) const;
   /** The minimum crease angle's merge; returns the crease angles of the regions it
    * leaves (per label - 1). */
   std::vector<CreaseAngle>

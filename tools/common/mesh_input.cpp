@@ -56,42 +56,6 @@ isMeshFile(const std::string& path)
   return false;
 }
 
-std::string
-plyProblem(const std::string& path)
-{
-  std::ifstream in(path, std::ios::binary);
-  std::string line, element;
-  bool red = false;
-  for (int n = 1; n <= 1024 && std::getline(in, line); ++n) {
-    std::istringstream words(line);
-    std::string keyword, kind, size_type, value_type, name;
-    words >> keyword;
-    if (keyword == "end_header")
-      break;
-    if (keyword == "element") {
-      words >> element;
-      red = false;
-    }
-    if (keyword != "property" || element != "vertex" || !(words >> kind))
-      continue;
-    const std::string where = "line " + std::to_string(n) + ": ";
-    if (kind == "list") {
-      words >> size_type >> value_type >> name;
-      return where + "a list property ('" + name.substr(0, 40) +
-             "') of the vertex element (PCL's reader aborts when its length varies)";
-    }
-    words >> name;
-    red = red || name == "red";
-    // PCL packs the colour into a field it adds at 'red'; 'blue' without it moved the
-    // next property past the point (an assertion in PCL, found by fuzzing)
-    if ((name == "green" || name == "blue") && !red)
-      return where + "a '" + name +
-             "' property of the vertex element without a 'red' before it (PCL's "
-             "reader aborts on it)";
-  }
-  return "";
-}
-
 bool
 toSurfaceMesh(const pcl::PolygonMesh& in, visfeat::SurfaceMesh& out, std::string& error)
 {
@@ -334,6 +298,39 @@ loadMesh(const std::string& path, visfeat::SurfaceMesh& mesh, std::string& error
   return true;
 }
 
+namespace {
+
+/** OBJ (PCL's reader) and STL (VTK's; binary STL is float32 by format) come in as
+ * 32-bit floats: far from the origin their coordinates step by |c| 2^-23, and the part
+ * is already rounded when the recentring comes. A step above this fraction of the
+ * part's extent (0.01 cell at 1,000 cells) is refused: a 100-unit part near 4.3e6
+ * (survey coordinates) reads in steps of 0.5 and gave 13/44/29 for 20/33/21 without a
+ * word. */
+constexpr double kMaxFloatStepOfExtent = 1e-5;
+
+void
+checkFloatPrecision(const std::string& ext,
+                    const Eigen::Vector3d& lo,
+                    const Eigen::Vector3d& hi)
+{
+  const double extent = (hi - lo).maxCoeff();
+  const double magnitude = lo.cwiseAbs().cwiseMax(hi.cwiseAbs()).maxCoeff();
+  const double step = magnitude * std::ldexp(1.0, -23);
+  if (!(step <= kMaxFloatStepOfExtent * extent)) {
+    std::ostringstream msg;
+    msg << (ext == ".obj" ? "OBJ" : "STL") << " coordinates are read as 32-bit floats"
+        << (ext == ".obj" ? " (PCL's OBJ reader)"
+                          : " (VTK's STL reader; binary STL is float32 by format)")
+        << ", and this mesh lies " << magnitude << " from the origin with an extent of "
+        << extent << ": its vertices are rounded to steps of " << step
+        << ", too coarse for its features; move it near the origin, or give it as "
+           ".ply (double properties) or .off, which are read in double and recentred";
+    throw visfeat::Error(msg.str());
+  }
+}
+
+} // namespace
+
 bool
 loadMeshAsCloud(const std::string& path,
                 const MeshDensity& density,
@@ -357,6 +354,9 @@ loadMeshAsCloud(const std::string& path,
       hi = hi.cwiseMax(v);
     }
     offset = recentringOffset(lo, hi);
+    const std::string ext = lowerExtension(path);
+    if (ext == ".obj" || ext == ".stl")
+      checkFloatPrecision(ext, lo, hi);
     if (!offset.isZero())
       for (Eigen::Vector3d& v : mesh.vertices)
         v -= offset;

@@ -2,6 +2,8 @@
 // faces, .obj and .off files read into a visfeat::SurfaceMesh and sampled to a cloud.
 #pragma once
 
+#include "common/ply_check.h"
+
 #include <visfeat/core/mesh/mesh_sampling.h>
 
 #include <pcl/PCLPointCloud2.h>
@@ -44,11 +46,6 @@ std::string stlProblem(const std::string& path);
  * cloud reader reports what is wrong with it. */
 bool isMeshFile(const std::string& path);
 
-/** \brief What PCL 1.13's PLY reader cannot read in the header of the .ply file at
- * `path` (cloud or mesh), empty when nothing: a list property of the vertex element
- * (PCL aborts on an assertion when its length varies from vertex to vertex), a 'green'
- * or 'blue' property without a 'red' before it (an assertion too). */
-std::string plyProblem(const std::string& path);
 
 /** \brief A pcl::PolygonMesh as a visfeat::SurfaceMesh: vertex coordinates whatever
  * their numeric type, polygons fanned from their first vertex. False + `error` (without

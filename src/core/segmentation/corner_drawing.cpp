@@ -250,7 +250,8 @@ cornersAtFreeEnds(ThinningState& state)
     const CellId at = state.nearestCell(*corner);
     bool near = at != kNoCell;
     for (const FreeEnd& f : ends)
-      near = near && (state.band.coord(endCell(f)).cast<double>() - *corner).norm() <= reach;
+      near =
+        near && (state.band.coord(endCell(f)).cast<double>() - *corner).norm() <= reach;
     if (!near)
       continue;
     // a new label, after the cores' (numberRegions renumbers them all)

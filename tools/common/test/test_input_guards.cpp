@@ -176,6 +176,39 @@ TEST_F(InputGuards, PlyProblemRefusesAListPropertyOfTheVertexElement)
     "");
 }
 
+TEST_F(InputGuards, PlyProblemRefusesCountsTheFileCannotHold)
+{
+  // PCL allocated the declared vertices first: 36 bytes declaring 10^9 vertices took
+  // 58 s and 11.7 GB before it failed
+  const std::string props = "property float x\nproperty float y\nproperty float z\n";
+  const std::string data(36, '\0');
+  EXPECT_EQ(vt::plyProblem(write("big.ply", "ply\nformat binary_little_endian 1.0\n"
+                                            "element vertex 1000000000\n" +
+                                              props + "end_header\n" + data)),
+            "the header declares elements needing at least 12000000000 bytes of data, "
+            "but the file holds 36 after its header (truncated, or its counts are "
+            "wrong)");
+  // three vertices fit in 36 bytes; a face list needs its count byte per face
+  const std::string three = "ply\nformat binary_little_endian 1.0\nelement vertex 3\n" +
+                            props + "end_header\n" + data;
+  EXPECT_EQ(vt::plyProblem(write("three.ply", three)), "");
+  const std::string faces = "ply\nformat binary_little_endian 1.0\nelement vertex 3\n" +
+                            props +
+                            "element face 5\nproperty list uchar int vertex_indices\n"
+                            "end_header\n" +
+                            data + "\x03";
+  EXPECT_NE(vt::plyProblem(write("faces.ply", faces)), "");
+  // ASCII: two characters a property at least
+  EXPECT_NE(vt::plyProblem(write("text.ply", "ply\nformat ascii 1.0\n"
+                                             "element vertex 1000000\n" +
+                                               props + "end_header\n0 0 0\n")),
+            "");
+  EXPECT_EQ(vt::plyProblem(write("text2.ply", "ply\nformat ascii 1.0\n"
+                                              "element vertex 2\n" +
+                                                props + "end_header\n0 0 0\n1 1 1\n")),
+            "");
+}
+
 TEST(ReadOff, RefusesAFaceCountThatWrapsAround)
 {
   // n + 1 wrapped to 0 and the indices were read past the line's tokens
