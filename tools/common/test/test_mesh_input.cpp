@@ -271,22 +271,38 @@ TEST_F(MeshInput, SamplesAMeshIntoACloud)
   EXPECT_EQ(again.data, cloud.data);
 }
 
-/** An OFF file of kTetrahedronOff's tetrahedron, scaled by 9 and moved by `shift`,
- * vertices printed to 17 digits. */
+/** The vertex lines of kTetrahedronOff's tetrahedron, scaled by 9 and moved by
+ * `shift`, printed to 17 digits after `prefix` ("" for OFF, "v " for OBJ). */
 std::string
-tetrahedronOffAt(const Eigen::Vector3d& shift)
+tetrahedronVerticesAt(const Eigen::Vector3d& shift, const char* prefix)
 {
   const Eigen::Vector3d v[4] = {Eigen::Vector3d::Zero(), 9.0 * Eigen::Vector3d::UnitX(),
                                 9.0 * Eigen::Vector3d::UnitY(),
                                 9.0 * Eigen::Vector3d::UnitZ()};
-  std::string text = "OFF\n4 4 0\n";
+  std::string text;
   char line[128];
   for (const Eigen::Vector3d& p : v) {
     const Eigen::Vector3d q = p + shift;
-    std::snprintf(line, sizeof(line), "%.17g %.17g %.17g\n", q.x(), q.y(), q.z());
+    std::snprintf(line, sizeof(line), "%s%.17g %.17g %.17g\n", prefix, q.x(), q.y(),
+                  q.z());
     text += line;
   }
-  return text + "3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n";
+  return text;
+}
+
+/** An OFF file of that tetrahedron. */
+std::string
+tetrahedronOffAt(const Eigen::Vector3d& shift)
+{
+  return "OFF\n4 4 0\n" + tetrahedronVerticesAt(shift, "") +
+         "3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n";
+}
+
+/** An OBJ file of that tetrahedron (the same faces, counted from 1). */
+std::string
+tetrahedronObjAt(const Eigen::Vector3d& shift)
+{
+  return tetrahedronVerticesAt(shift, "v ") + "f 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n";
 }
 
 TEST_F(MeshInput, AFloatFormatInSurveyCoordinatesIsRefused)
@@ -294,25 +310,14 @@ TEST_F(MeshInput, AFloatFormatInSurveyCoordinatesIsRefused)
   // OBJ comes in as 32-bit floats (PCL): near 4.3e6 in steps of 0.5, for a 9-unit
   // part; OFF (double) is recentred instead (the test below)
   const Eigen::Vector3d survey(512345.678, 4312345.123, 120.456);
-  std::string obj;
-  char line[128];
-  const Eigen::Vector3d corners[4] = {
-    Eigen::Vector3d::Zero(), 9.0 * Eigen::Vector3d::UnitX(),
-    9.0 * Eigen::Vector3d::UnitY(), 9.0 * Eigen::Vector3d::UnitZ()};
-  for (const Eigen::Vector3d& c : corners) {
-    const Eigen::Vector3d q = c + survey;
-    std::snprintf(line, sizeof(line), "v %.17g %.17g %.17g\n", q.x(), q.y(), q.z());
-    obj += line;
-  }
-  obj += "f 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n";
   vt::MeshDensity density;
   density.points = 2000;
   pcl::PCLPointCloud2 cloud;
   std::shared_ptr<const visfeat::SurfaceMesh> mesh;
   Eigen::Vector3d offset;
   std::string summary, error;
-  EXPECT_FALSE(vt::loadMeshAsCloud(write("far.obj", obj), density, cloud, mesh, offset,
-                                   summary, error));
+  EXPECT_FALSE(vt::loadMeshAsCloud(write("far.obj", tetrahedronObjAt(survey)), density,
+                                   cloud, mesh, offset, summary, error));
   EXPECT_NE(error.find("OBJ coordinates are read as 32-bit floats"), std::string::npos)
     << error;
   EXPECT_NE(error.find(".ply (double properties) or .off"), std::string::npos) << error;
