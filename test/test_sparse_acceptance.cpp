@@ -2,8 +2,9 @@
 // 20,000 and 40,000 points under three rotations (fresh seeds, none used while tuning
 // the fill): the per-point bars of the components issue on every case (precision >=
 // 0.95 within 2, recall >= 0.90 within 1, in point spacings where the cells are finer
-// than the spacing), and exact counts and arcs on a guarded share of the cases. About
-// 2 minutes on 2 cores: label acceptance.
+// than the spacing), and exact counts and arcs on a guarded share of the cases. One
+// ctest case per model and point count; about 3 minutes of CPU in all: label
+// acceptance.
 
 #include "band_fixtures.h"
 
@@ -20,7 +21,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <iterator>
 #include <memory>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -31,17 +34,55 @@ namespace ev = visfeat::evaluation;
 using Estimator =
   visfeat::VisibilityFeatureEstimation<pcl::PointXYZ, visfeat::PointVisibility>;
 
-/** Cases with exact counts and arcs, of 63, that must hold: the issue asks for all 63.
- * Measured on 2026-12-01 on these seeds: 53 (58 with exact counts), then 56 (61) with
- * the stray regions merged (strayRegionMerge: the icosahedron's extra vertices beside
- * its edges and near its corners). The misses left: a corner region more than 3
- * spacings off its corner (tetrahedron, icosahedron, U-prism at 10,000 points), an
- * edge split in two with an extra corner (icosahedron 10,000), an extra face and edge
- * (tetrahedron 10,000), an edge-face arc to a third face and a missing corner arc
- * (icosahedron 10,000, U-prism 20,000). The run is deterministic (any thread count),
- * so this is the measured figure: a guard against losing ground, not the issue's bar.
+/** A (model, point count) pair and the rotations of it, of 3, that must give exact
+ * counts and arcs. The issue asks for all 63 cases; this is the figure measured on
+ * 2026-12-01 on these seeds (56 of 63; 53 before the stray regions were merged), a
+ * guard against losing ground, not the issue's bar. The run is deterministic (any
+ * thread count). The misses left: a corner region more than 3 spacings off its
+ * corner (tetrahedron seed 31, icosahedron 32, U-prism 33, all at 10,000 points), an
+ * edge split in two with an extra corner (icosahedron 10,000, seed 31), an extra face
+ * and edge (tetrahedron 10,000, seed 32), an edge-face arc to a third face
+ * (icosahedron 10,000, seed 33) and a missing corner arc (U-prism 20,000, seed 33).
  */
-constexpr int kMinExactCases = 56;
+struct SparseCase
+{
+  const char* model;
+  std::size_t count;
+  int min_exact;
+};
+
+const SparseCase kCases[] = {
+  {"cube", 10000, 3},
+  {"cube", 20000, 3},
+  {"cube", 40000, 3},
+  {"tetrahedron", 10000, 1},
+  {"tetrahedron", 20000, 3},
+  {"tetrahedron", 40000, 3},
+  {"icosahedron", 10000, 0},
+  {"icosahedron", 20000, 3},
+  {"icosahedron", 40000, 3},
+  {"triangular_prism", 10000, 3},
+  {"triangular_prism", 20000, 3},
+  {"triangular_prism", 40000, 3},
+  {"u_prism", 10000, 2},
+  {"u_prism", 20000, 2},
+  {"u_prism", 40000, 3},
+  {"box_with_hole", 10000, 3},
+  {"box_with_hole", 20000, 3},
+  {"box_with_hole", 40000, 3},
+  {"cylinder", 10000, 3},
+  {"cylinder", 20000, 3},
+  {"cylinder", 40000, 3},
+};
+
+const std::uint64_t kSeeds[] = {31, 32, 33};
+
+/** For gtest's names of the cases (ctest lists them). */
+void
+PrintTo(const SparseCase& c, std::ostream* out)
+{
+  *out << c.model << " at " << c.count << " points";
+}
 
 struct Outcome
 {
@@ -102,22 +143,44 @@ runCase(const std::string& name, std::size_t count, std::uint64_t seed)
   return outcome;
 }
 
-TEST(SparseClouds, EveryModelAtTenToFortyThousandPoints)
+class SparseClouds : public ::testing::TestWithParam<SparseCase>
+{};
+
+// One test per model and point count (21, ~10-40 s each), so that ctest -j spreads
+// them over the cores.
+TEST_P(SparseClouds, DefaultOptionsFindTheTopology)
 {
-  int exact = 0, cases = 0;
+  const SparseCase& c = GetParam();
+  int exact = 0;
+  for (const std::uint64_t seed : kSeeds) {
+    const Outcome o = runCase(c.model, c.count, seed);
+    exact += o.exact;
+    EXPECT_GE(o.precision, 0.95) << o.name;
+    EXPECT_GE(o.recall, 0.90) << o.name;
+    if (!o.exact)
+      std::printf("not exact: %s: %s\n", o.name.c_str(), o.found.c_str());
+  }
+  std::printf("%s %zu: exact counts and arcs in %d of %zu rotations\n", c.model,
+              c.count, exact, std::size(kSeeds));
+  EXPECT_GE(exact, c.min_exact);
+}
+
+TEST(SparseCloudsCatalogue, EveryModelAtEveryCount)
+{
   for (const std::string& name : syn::cadModelNames())
     for (const std::size_t count : {10000u, 20000u, 40000u})
-      for (const std::uint64_t seed : {31u, 32u, 33u}) {
-        const Outcome o = runCase(name, count, seed);
-        ++cases;
-        exact += o.exact;
-        EXPECT_GE(o.precision, 0.95) << o.name;
-        EXPECT_GE(o.recall, 0.90) << o.name;
-        if (!o.exact)
-          std::printf("not exact: %s: %s\n", o.name.c_str(), o.found.c_str());
-      }
-  std::printf("exact counts and arcs: %d of %d cases\n", exact, cases);
-  EXPECT_GE(exact, kMinExactCases) << "of " << cases;
+      EXPECT_TRUE(std::any_of(
+        std::begin(kCases), std::end(kCases),
+        [&](const SparseCase& c) { return c.model == name && c.count == count; }))
+        << name << " " << count;
 }
+
+INSTANTIATE_TEST_SUITE_P(Models,
+                         SparseClouds,
+                         ::testing::ValuesIn(kCases),
+                         [](const ::testing::TestParamInfo<SparseCase>& info) {
+                           return std::string(info.param.model) + "_" +
+                                  std::to_string(info.param.count);
+                         });
 
 } // namespace

@@ -31,7 +31,7 @@ message(STATUS "core_without_pcl: no PCL include in ${count} core files")
 # (b) Build the core without PCL.
 file(REMOVE_RECURSE "${WORK_DIR}")
 set(args -S "${SOURCE_DIR}/test/core_without_pcl" -B "${WORK_DIR}"
-         "-DVISFEAT_SOURCE_DIR=${SOURCE_DIR}" -DCMAKE_BUILD_TYPE=Release)
+         "-DVISFEAT_SOURCE_DIR=${SOURCE_DIR}")
 if(GENERATOR)
   list(APPEND args -G "${GENERATOR}")
 endif()
