@@ -81,6 +81,8 @@ TEST(EstimatorFill, SparseCloudsAreFilledAtTheTopologyResolution)
     EXPECT_GT(band.fillCellCount(), band.size() / 2);
     EXPECT_LT(band.repairCellCount(), band.size() / 100) << "the fill closes the band";
     EXPECT_TRUE(est.getWarnings().empty()) << est.getWarnings().front();
+    EXPECT_GE(est.getPointNoise(), 0.0) << "measured by the fill";
+    EXPECT_LT(est.getPointNoise(), 0.01) << "noise-free points";
 
     // Corners and faces exact, every crease found. (The exact edge count is not met on
     // every rotation yet: a corner can leave an edge fragment of ~25 cells, e.g. 13
@@ -178,6 +180,32 @@ TEST(EstimatorFill, APointsOnlyBandOfASparseCloudWarns)
   EXPECT_EQ(est.getSurfaceFillUsed(), visfeat::SurfaceFill::kLocalTriangles);
   for (const std::string& w : est.getWarnings())
     EXPECT_EQ(w.find("holes"), std::string::npos) << w;
+}
+
+TEST(EstimatorFill, ANoisySparseCloudWarnsThatItIsNoisy)
+{
+  // 10,000 points of a cube with Gaussian noise of 0.4 cells at 256 (counts break
+  // from about 0.2): the fill measures the noise and says so first
+  const syn::CadModel model =
+    syn::rotated(syn::cadModelByName("cube"), syn::randomRotation(12));
+  syn::SamplingOptions options;
+  options.count = 10000;
+  options.seed = 12;
+  const double cell = model.bounds().sizes().maxCoeff() / 256.0;
+  options.noise_sigma = 0.4 * cell;
+  Estimator est;
+  est.setInputCloud(cloudOf(syn::sampleCadModel(model, options)));
+  Output out;
+  est.compute(out);
+  ASSERT_EQ(est.getErrorMessage(), "");
+  ASSERT_EQ(est.getSurfaceFillUsed(), visfeat::SurfaceFill::kLocalTriangles);
+  const double sigma_cells = 0.4 * cell / est.getGrid().cell_size;
+  EXPECT_GT(est.getPointNoise(), 0.7 * sigma_cells);
+  EXPECT_LT(est.getPointNoise(), 1.0 * sigma_cells);
+  ASSERT_FALSE(est.getWarnings().empty());
+  const std::string& first = est.getWarnings().front();
+  EXPECT_NE(first.find("scatter about their local planes"), std::string::npos) << first;
+  EXPECT_NE(first.find("or lower"), std::string::npos) << first;
 }
 
 TEST(EstimatorFill, ABandTooCoarseForItsFeaturesWarns)

@@ -385,6 +385,28 @@ TEST(CreaseFill, RebuildsACreaseSharp)
     << "thread count";
 }
 
+TEST(TangentPlanes, MeasureTheNoiseOfTheFaces)
+{
+  // noise-free faces and a crease: 0 (the crease's points are a minority)
+  std::mt19937 rng(21);
+  const std::vector<Eigen::Vector3d> clean = rightAngleCrease(rng);
+  const int k = visfeat::LocalTriangleParameters{}.neighbours + 1;
+  double noise = -1.0;
+  visfeat::tangentPlanes(clean, nearest(clean, k), k, 2, &noise);
+  EXPECT_LT(noise, 1e-9);
+  // Gaussian noise of sigma per coordinate: the RMS about a plane fitted to 11 points
+  // is about sqrt(8 / 11) sigma = 0.85 sigma
+  for (const double sigma : {0.1, 0.4}) {
+    std::normal_distribution<double> gauss(0.0, sigma);
+    std::vector<Eigen::Vector3d> noisy = clean;
+    for (Eigen::Vector3d& p : noisy)
+      p += Eigen::Vector3d(gauss(rng), gauss(rng), gauss(rng));
+    visfeat::tangentPlanes(noisy, nearest(noisy, k), k, 1, &noise);
+    EXPECT_GT(noise, 0.7 * sigma) << sigma;
+    EXPECT_LT(noise, 1.0 * sigma) << sigma;
+  }
+}
+
 /** The sparse fill with its creases rebuilt, as localTriangleCells() puts it together:
  * the local triangles (chords lifted) and the crease strips, the strips checked to be
  * the same on one thread as on two. */

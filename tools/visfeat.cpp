@@ -379,6 +379,11 @@ printSummary(const Estimator& estimator, const vt::Options& opt)
     print_value("%.3f", band.roughness());
     print_info(" cells");
   }
+  if (estimator.getPointNoise() >= 0.0) {
+    print_info(", point noise ");
+    print_value("%.3f", estimator.getPointNoise());
+    print_info(" cells");
+  }
   print_info("\n");
   const visfeat::PhaseTimes& times = estimator.getPhaseTimes();
   print_info("Phases: grid ");

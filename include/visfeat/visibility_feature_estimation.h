@@ -389,6 +389,13 @@ public:
    * one line. */
   inline SurfaceFill getSurfaceFillUsed() const { return fill_used_; }
   inline const std::string& getSurfaceFillReason() const { return fill_reason_; }
+  /** \brief The points' noise measured by the last successful compute()'s fill, in
+   * cells: the median over the points of the RMS distance of a point and its nearest
+   * neighbours from their least-squares plane (tangentPlanes(); about 0.85 sigma for
+   * Gaussian noise of sigma cells per coordinate), or -1 when the fill did not measure
+   * it (the band from the points alone, a mesh, an organized cloud: see
+   * VoxelBand::roughness() for the band from the points). */
+  inline double getPointNoise() const { return point_noise_; }
 
   /** \brief Warnings on the last successful compute(), one line each with the cause
    * and what to do: results that cannot be trusted (no region, too few cells reach
@@ -434,6 +441,7 @@ private:
     int search_cap = 0;            // the search for narrow faces goes no finer (0: off)
     std::string search_cap_reason; // why it stops there
     std::string fill_reason;
+    double point_noise = -1.0; // cells: the fill's measure (FillReport::noise), or -1
     std::vector<std::string> notes;
     std::vector<std::string> warnings;
     PhaseTimes times;
@@ -458,7 +466,8 @@ private:
                            Results results,
                            PointCloudOut& output) const;
   void chooseFill(Run& run) const;
-  std::vector<CellCoord> fillCells(const Run& run, const PointCloudIn& surface) const;
+  /** Sets run.point_noise where the fill measures it. */
+  std::vector<CellCoord> fillCells(Run& run, const PointCloudIn& surface) const;
   void checkResults(const Results& results, Run& run) const;
   void checkMemoryBudget(const Run& run) const;
   void checkBandMemory(const VoxelBand& band,
@@ -522,6 +531,7 @@ private:
   ResolutionEstimate resolution_estimate_;
   SurfaceFill fill_used_ = SurfaceFill::kPoints;
   std::string fill_reason_;
+  double point_noise_ = -1.0;
   std::vector<std::string> notes_;
   std::vector<std::string> warnings_;
   std::string error_;

@@ -58,7 +58,7 @@ localTriangleCells(const pcl::PointCloud<PointT>& cloud,
                    const GridSpec& grid,
                    const LocalTriangleParameters& parameters,
                    int threads,
-                   std::size_t* triangle_count)
+                   FillReport* report)
 {
   parameters.validate();
   // The finite points, their k nearest neighbours (the point itself comes first and
@@ -94,12 +94,12 @@ localTriangleCells(const pcl::PointCloud<PointT>& cloud,
   }
   const std::vector<TriangleIndices> triangles =
     umbrellaTriangles(points, neighbours, k, parameters, threads);
-  if (triangle_count)
-    *triangle_count = triangles.size();
+  if (report)
+    *report = FillReport{triangles.size(), -1.0};
   if (parameters.crease_degrees >= 180.0)
     return rasterizeTriangles(grid, points, triangles, threads);
   const std::vector<TangentPlane> planes =
-    tangentPlanes(points, neighbours, k, threads);
+    tangentPlanes(points, neighbours, k, threads, report ? &report->noise : nullptr);
   std::vector<CellCoord> cells = creaseFillCells(grid, points, planes, triangles,
                                                  parameters.crease_degrees, threads);
   const std::vector<CellCoord> strips = creaseStripCells(
@@ -119,7 +119,7 @@ organizedCells(const pcl::PointCloud<PointT>& cloud,
                const GridSpec& grid,
                const OrganizedTriangleParameters& parameters,
                int threads,
-               std::size_t* triangle_count)
+               FillReport* report)
 {
   if (cloud.height <= 1 ||
       static_cast<std::size_t>(cloud.width) * cloud.height != cloud.size())
@@ -136,8 +136,8 @@ organizedCells(const pcl::PointCloud<PointT>& cloud,
   std::vector<TriangleIndices> triangles =
     organizedTriangles(points, static_cast<int>(cloud.width),
                        static_cast<int>(cloud.height), origin, parameters);
-  if (triangle_count)
-    *triangle_count = triangles.size();
+  if (report)
+    *report = FillReport{triangles.size(), -1.0};
   // rasterizeTriangles() refuses non-finite vertices: the triangles use finite ones
   for (Eigen::Vector3d& p : points)
     if (!p.allFinite())
@@ -214,10 +214,10 @@ pointsOnCells(const pcl::PointCloud<PointT>& cloud,
                                                         double);                       \
   template std::vector<visfeat::CellCoord> visfeat::localTriangleCells<T>(             \
     const pcl::PointCloud<T>&, const visfeat::GridSpec&,                               \
-    const visfeat::LocalTriangleParameters&, int, std::size_t*);                       \
+    const visfeat::LocalTriangleParameters&, int, visfeat::FillReport*);               \
   template std::vector<visfeat::CellCoord> visfeat::organizedCells<T>(                 \
     const pcl::PointCloud<T>&, const visfeat::GridSpec&,                               \
-    const visfeat::OrganizedTriangleParameters&, int, std::size_t*);                   \
+    const visfeat::OrganizedTriangleParameters&, int, visfeat::FillReport*);           \
   template void visfeat::pointsOnCells<T>(                                             \
     const pcl::PointCloud<T>&, const visfeat::GridSpec&,                               \
     const std::vector<visfeat::CellCoord>&, std::vector<visfeat::OccupiedCell>&,       \

@@ -19,6 +19,7 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <iomanip>
 #include <limits>
 #include <new>
 #include <sstream>
@@ -152,18 +153,25 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::prepare() const
 template <typename PointInT, typename PointOutT>
 std::vector<CellCoord>
 VisibilityFeatureEstimation<PointInT, PointOutT>::fillCells(
-  const Run& run, const PointCloudIn& surface) const
+  Run& run, const PointCloudIn& surface) const
 {
+  FillReport report;
   switch (run.fill) {
   case SurfaceFill::kMesh:
     return rasterizeTriangles(run.grid, mesh_->vertices, mesh_->triangles,
                               run.visibility.threads);
-  case SurfaceFill::kLocalTriangles:
-    if (run.resolution.copies > 1) // triangles between sites, not between copies
-      return localTriangleCells(distinctSites(surface, run.resolution.copy_radius),
-                                run.grid, local_triangles_, run.visibility.threads);
-    return localTriangleCells(surface, run.grid, local_triangles_,
-                              run.visibility.threads);
+  case SurfaceFill::kLocalTriangles: {
+    std::vector<CellCoord> cells =
+      run.resolution.copies > 1 // triangles between sites, not between copies
+        ? localTriangleCells(distinctSites(surface, run.resolution.copy_radius),
+                             run.grid, local_triangles_, run.visibility.threads,
+                             &report)
+        : localTriangleCells(surface, run.grid, local_triangles_,
+                             run.visibility.threads, &report);
+    if (report.noise >= 0.0)
+      run.point_noise = report.noise / run.grid.cell_size;
+    return cells;
+  }
   case SurfaceFill::kOrganized:
     return organizedCells(surface, run.grid, organized_triangles_,
                           run.visibility.threads);
@@ -495,6 +503,23 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::checkResults(const Results& re
       << calmer << " or lower";
     run.warnings.push_back(r.str());
   }
+  if (run.point_noise > kNoisyPointNoise) {
+    const int calmer = std::max(
+      GridSpec::kMinResolution,
+      static_cast<int>(std::floor(resolution * kCalmRoughness / run.point_noise)));
+    std::ostringstream r;
+    r << "the points scatter about their local planes: noise "
+      << std::round(1000.0 * run.point_noise) / 1000.0
+      << " cells (RMS about the planes fitted to each point's neighbours; clean clouds "
+         "give about 0, and counts break from about 0.17): the band filled between the "
+         "points is as rough, and the result may be wrong; smooth the points first "
+         "(pcl::MovingLeastSquares), sample denser, or use a resolution of "
+      << calmer << " or lower with the fill 'triangles' (setSurfaceFill()), where "
+      << "features need to lie about " << std::setprecision(3)
+      << 2 * min_radius * run.grid.cell_size * resolution / calmer
+      << " apart (world units)";
+    run.warnings.insert(run.warnings.begin(), r.str()); // the cause of the others
+  }
   if (repair_share > kMaxRepairShare) {
     std::ostringstream r;
     r << "the band has holes: " << band.repairCellCount() << " of " << band.size()
@@ -533,6 +558,7 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::computeFeature(PointCloudOut& 
       resolution_estimate_ = std::move(run.resolution);
       fill_used_ = run.fill;
       fill_reason_ = std::move(run.fill_reason);
+      point_noise_ = run.point_noise;
       notes_ = std::move(run.notes);
       warnings_ = std::move(run.warnings);
       for (const std::string& warning : warnings_)

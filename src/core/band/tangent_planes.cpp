@@ -183,7 +183,8 @@ std::vector<TangentPlane>
 tangentPlanes(const std::vector<Eigen::Vector3d>& points,
               const std::vector<std::uint32_t>& neighbours,
               int k,
-              int threads)
+              int threads,
+              double* noise_out)
 {
   if (k < 0 || neighbours.size() != points.size() * static_cast<std::size_t>(k))
     throw Error("tangentPlanes: the neighbour table does not match the points");
@@ -231,6 +232,8 @@ tangentPlanes(const std::vector<Eigen::Vector3d>& points,
     std::nth_element(rms.begin(), middle, rms.end());
     noise = *middle;
   }
+  if (noise_out)
+    *noise_out = noise;
 
   std::vector<TangentPlane> planes(points.size());
   parallelFor(points.size(), threads, kPerChunk,
