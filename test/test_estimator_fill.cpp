@@ -182,10 +182,10 @@ TEST(EstimatorFill, APointsOnlyBandOfASparseCloudWarns)
     EXPECT_EQ(w.find("holes"), std::string::npos) << w;
 }
 
-TEST(EstimatorFill, ANoisySparseCloudWarnsThatItIsNoisy)
+TEST(EstimatorFill, ANoisySparseCloudGetsACalmerResolutionOrAWarning)
 {
   // 10,000 points of a cube with Gaussian noise of 0.4 cells at 256 (counts break
-  // from about 0.2): the fill measures the noise and says so first
+  // from about 0.2): 0 vertices and edges at 256
   const syn::CadModel model =
     syn::rotated(syn::cadModelByName("cube"), syn::randomRotation(12));
   syn::SamplingOptions options;
@@ -196,6 +196,9 @@ TEST(EstimatorFill, ANoisySparseCloudWarnsThatItIsNoisy)
   Estimator est;
   est.setInputCloud(cloudOf(syn::sampleCadModel(model, options)));
   Output out;
+
+  // at a set resolution: the fill measures the noise and says so first
+  est.setResolution(256);
   est.compute(out);
   ASSERT_EQ(est.getErrorMessage(), "");
   ASSERT_EQ(est.getSurfaceFillUsed(), visfeat::SurfaceFill::kLocalTriangles);
@@ -206,6 +209,23 @@ TEST(EstimatorFill, ANoisySparseCloudWarnsThatItIsNoisy)
   const std::string& first = est.getWarnings().front();
   EXPECT_NE(first.find("scatter about their local planes"), std::string::npos) << first;
   EXPECT_NE(first.find("or lower"), std::string::npos) << first;
+
+  // automatic: the resolution where the noise is 0.1 cell, still filled, and the cube
+  est.setResolution(0);
+  est.compute(out);
+  ASSERT_EQ(est.getErrorMessage(), "");
+  const visfeat::ResolutionEstimate& r = est.getResolutionEstimate();
+  EXPECT_LT(r.resolution, 128);
+  EXPECT_NE(r.reason.find("noise"), std::string::npos) << r.reason;
+  EXPECT_EQ(est.getSurfaceFillUsed(), visfeat::SurfaceFill::kLocalTriangles);
+  EXPECT_LT(est.getPointNoise(), visfeat::kNoisyPointNoise);
+  const auto c = counts(est);
+  EXPECT_EQ(c[0], 8u);
+  EXPECT_EQ(c[1], 12u);
+  EXPECT_EQ(c[2], 6u);
+  ASSERT_FALSE(est.getWarnings().empty()) << "closer features merge";
+  EXPECT_NE(est.getWarnings().front().find("for the points' noise"), std::string::npos)
+    << est.getWarnings().front();
 }
 
 TEST(EstimatorFill, ABandTooCoarseForItsFeaturesWarns)

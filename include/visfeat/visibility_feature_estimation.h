@@ -465,6 +465,11 @@ private:
                            Run& run,
                            Results results,
                            PointCloudOut& output) const;
+  /** The automatic resolution lowered where the fill measured noisy points. */
+  Results calmResolution(const Run& base,
+                         Run& run,
+                         Results results,
+                         PointCloudOut& output) const;
   void chooseFill(Run& run) const;
   /** Sets run.point_noise where the fill measures it. */
   std::vector<CellCoord> fillCells(Run& run, const PointCloudIn& surface) const;

@@ -546,8 +546,12 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::computeFeature(PointCloudOut& 
       run_.reset();
       const Run base = run;
       Results results = computeResults(run, output);
-      if (run.search_cap > 0) // the automatic resolution: look for narrow faces
+      if (run.search_cap > 0) { // the automatic resolution
+        if (run.point_noise > kLowerForPointNoise)
+          results = calmResolution(base, run, std::move(results), output);
+        // look for narrow faces, no finer than the noise allows
         results = searchResolution(base, run, std::move(results), output);
+      }
       // Success: the new results replace the previous ones.
       band_ = std::move(results.band);
       free_space_ = std::move(results.free_space);

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <iomanip>
 #include <sstream>
 
 namespace visfeat {
@@ -262,6 +263,58 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::searchResolution(
     break;
   }
   run.times.search_ms += discarded_ms;
+  return results;
+}
+
+template <typename PointInT, typename PointOutT>
+typename VisibilityFeatureEstimation<PointInT, PointOutT>::Results
+VisibilityFeatureEstimation<PointInT, PointOutT>::calmResolution(
+  const Run& base, Run& run, Results results, PointCloudOut& output) const
+{
+  // The band filled between noisy points is as rough as they are, in cells: the
+  // resolution at which their noise is kCalmRoughness cells, with the fill, and no
+  // finer search (see kNoisyPointNoise).
+  const int current = run.resolution.resolution;
+  const int calmer =
+    std::max(GridSpec::kMinResolution,
+             static_cast<int>(std::floor(current * kCalmRoughness / run.point_noise)));
+  if (calmer >= current)
+    return results;
+  std::ostringstream why;
+  why << "the points' noise " << std::round(1000.0 * run.point_noise) / 1000.0
+      << " cells at " << current << ", where counts break: lowered to " << calmer
+      << ", where it is about " << kCalmRoughness << " cells";
+  Run calm = base;
+  calm.resolution.resolution = calmer;
+  calm.resolution.reason = run.resolution.reason + "; " + why.str();
+  calm.raised_for_fill = !mesh_; // the band stays filled between the points
+  calm.search_cap = calmer;
+  calm.search_cap_reason = "what the points' noise allows";
+  PointCloudOut calm_output = output;
+  std::string problem;
+  const auto start = std::chrono::steady_clock::now();
+  try {
+    prepareGrid(calm, calmer);
+    calm.times.grid_ms = detail::millisecondsSince(start);
+    Results calm_results = computeResults(calm, calm_output);
+    calm.times.search_ms += run.times.total() - run.times.shape_ms;
+    std::ostringstream w;
+    w << "resolution " << calmer << " for the points' noise (" << why.str()
+      << "): features closer than about " << std::setprecision(3)
+      << 2.0 * run.segmentation.components.min_radius * calm.grid.cell_size
+      << " (world units) merge and small ones may be lost; smooth the points "
+      << "(pcl::MovingLeastSquares) or sample denser to resolve them";
+    calm.warnings.insert(calm.warnings.begin(), w.str());
+    output.swap(calm_output);
+    run = std::move(calm);
+    return calm_results;
+  } catch (const Error& e) {
+    problem = e.what();
+  } catch (const std::bad_alloc&) {
+    problem = "out of memory";
+  }
+  run.warnings.push_back("resolution " + std::to_string(calmer) + ", " + why.str() +
+                         ", failed (" + detail::oneLine(problem) + ")");
   return results;
 }
 
