@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdlib>
+#include <memory>
 #include <vector>
 
 namespace {
@@ -408,6 +409,49 @@ TEST(SegmentationSteps, ThinningKeepsFeatureWidthCellsEachSideOfTheSkeleton)
                 s.cellLabels()[std::size_t(sheet.at(20, 0))]);
     }
   }
+}
+
+TEST(SegmentationSteps, AnEdgeCutOffItsCornerIsRejoinedAcrossAShortGap)
+{
+  // Hand-painted regions on the edge sheet: a face (1) everywhere, an edge (2) at
+  // x = 10, y 0..5, and its corner (3) `gap` cells beyond its end, paired.
+  const Sheet sheet = edgeSheet();
+  const auto paint = [&](int gap, bool blocked) {
+    auto steps = std::make_unique<Steps>(sheet, smallParameters());
+    seg::SegmentationState& state = steps->state;
+    state.cls.assign(5, FeatureClass::kNone);
+    state.cls[1] = FeatureClass::kFace;
+    state.cls[2] = FeatureClass::kEdge;
+    state.cls[3] = FeatureClass::kVertex;
+    state.cls[4] = FeatureClass::kEdge;
+    state.labels.assign(sheet.band.size(), 1);
+    for (int y = 0; y <= 5; ++y)
+      state.labels[std::size_t(sheet.at(10, y))] = 2;
+    state.labels[std::size_t(sheet.at(10, 6 + gap))] = 3;
+    if (blocked) // another edge across the gap, cell (10, 6) and its sides
+      for (int x = 8; x <= 12; ++x)
+        state.labels[std::size_t(sheet.at(x, 6))] = 4;
+    return steps;
+  };
+  const auto rejoined = [&](int gap, bool blocked) {
+    const auto steps = paint(gap, blocked);
+    seg::ThinningState thinning(steps->state);
+    thinning.pairs.emplace(3u, 2u);
+    std::vector<std::uint32_t> before = thinning.labels;
+    seg::rejoinCutPairs(thinning);
+    int changed = 0;
+    for (std::size_t c = 0; c < before.size(); ++c)
+      if (thinning.labels[c] != before[c]) {
+        EXPECT_EQ(thinning.labels[c], 2u) << "gap " << gap;
+        ++changed;
+      }
+    return changed;
+  };
+  EXPECT_EQ(rejoined(1, false), 1); // (10, 6)
+  EXPECT_EQ(rejoined(2, false), 2); // (10, 6), (10, 7)
+  EXPECT_EQ(rejoined(3, false), 0) << "beyond kMaxRejoinSteps";
+  EXPECT_EQ(rejoined(0, false), 0) << "touching already";
+  EXPECT_EQ(rejoined(1, true), 0) << "never through another feature";
 }
 
 TEST(LabelUnion, JoinKeepsTheSmallerRootAttachKeepsTheFirst)

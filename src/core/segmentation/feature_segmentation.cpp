@@ -104,6 +104,7 @@ FeatureSegmentation::compute(const VoxelBand& band,
       traceRidgePaths(thinning);
       bridgeSkeletonGaps(thinning);
       cutToSkeletonWidth(thinning);
+      rejoinCutPairs(thinning);
       middleOfSkeleton(thinning);
       result.skeleton_ = std::move(thinning.skeleton);
       result.skeleton_centres_ = std::move(thinning.centres);

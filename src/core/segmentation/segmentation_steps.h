@@ -114,6 +114,11 @@ void bridgeSkeletonGaps(ThinningState& state);
  * (breadth-first from the faces), or keep their label where no face reaches them. */
 void cutToSkeletonWidth(ThinningState& state);
 
+/** \brief A vertex-edge pair (`pairs`) whose regions no longer touch after the cut
+ * is joined again: the cells of the shortest band path (at most kMaxRejoinSteps
+ * 6-steps, through no other feature) from the edge to the vertex join the edge. */
+void rejoinCutPairs(ThinningState& state);
+
 // --- skeleton_centres.cpp -----------------------------------------------------------
 
 /** \brief For each skeleton cell without a centre: the mean of its region's skeleton
