@@ -461,6 +461,10 @@ private:
   Run prepare() const;
   int chooseResolution(const CloudShape& shape, Run& run) const;
   void prepareGrid(Run& run, int resolution) const;
+  /** Prepares run at `resolution` and computes it into output: the results, or none
+   * with the reason in problem (a memory refusal, out of memory). */
+  std::optional<Results>
+  runAt(Run& run, int resolution, PointCloudOut& output, std::string& problem) const;
   Results searchResolution(const Run& base,
                            Run& run,
                            Results results,

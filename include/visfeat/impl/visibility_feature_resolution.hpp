@@ -10,6 +10,7 @@
 #include <chrono>
 #include <cmath>
 #include <iomanip>
+#include <optional>
 #include <sstream>
 
 namespace visfeat {
@@ -189,6 +190,26 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::chooseFill(Run& run) const
 }
 
 template <typename PointInT, typename PointOutT>
+std::optional<typename VisibilityFeatureEstimation<PointInT, PointOutT>::Results>
+VisibilityFeatureEstimation<PointInT, PointOutT>::runAt(Run& run,
+                                                        int resolution,
+                                                        PointCloudOut& output,
+                                                        std::string& problem) const
+{
+  const auto start = std::chrono::steady_clock::now();
+  try {
+    prepareGrid(run, resolution);
+    run.times.grid_ms = detail::millisecondsSince(start);
+    return computeResults(run, output);
+  } catch (const Error& e) {
+    problem = e.what();
+  } catch (const std::bad_alloc&) {
+    problem = "out of memory";
+  }
+  return std::nullopt;
+}
+
+template <typename PointInT, typename PointOutT>
 typename VisibilityFeatureEstimation<PointInT, PointOutT>::Results
 VisibilityFeatureEstimation<PointInT, PointOutT>::searchResolution(
   const Run& base, Run& run, Results results, PointCloudOut& output) const
@@ -240,20 +261,13 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::searchResolution(
     finer.search_cap_reason = run.search_cap_reason;
     PointCloudOut finer_output = output;
     std::string problem;
-    const auto start = std::chrono::steady_clock::now();
-    try {
-      prepareGrid(finer, next);
-      finer.times.grid_ms = detail::millisecondsSince(start);
-      Results finer_results = computeResults(finer, finer_output);
+    if (std::optional<Results> finer_results =
+          runAt(finer, next, finer_output, problem)) {
       discarded_ms += run.times.total() - run.times.shape_ms;
-      results = std::move(finer_results);
+      results = std::move(*finer_results);
       run = std::move(finer);
       output.swap(finer_output);
       continue;
-    } catch (const Error& e) {
-      problem = e.what();
-    } catch (const std::bad_alloc&) {
-      problem = "out of memory";
     }
     run.warnings.push_back(found.str() + ": they merge into the edges around them; " +
                            "resolution " + std::to_string(next) + " failed (" +
@@ -292,11 +306,7 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::calmResolution(
   calm.search_cap_reason = "what the points' noise allows";
   PointCloudOut calm_output = output;
   std::string problem;
-  const auto start = std::chrono::steady_clock::now();
-  try {
-    prepareGrid(calm, calmer);
-    calm.times.grid_ms = detail::millisecondsSince(start);
-    Results calm_results = computeResults(calm, calm_output);
+  if (std::optional<Results> calm_results = runAt(calm, calmer, calm_output, problem)) {
     calm.times.search_ms += run.times.total() - run.times.shape_ms;
     std::ostringstream w;
     w << "resolution " << calmer << " for the points' noise (" << why.str()
@@ -307,11 +317,7 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::calmResolution(
     calm.warnings.insert(calm.warnings.begin(), w.str());
     output.swap(calm_output);
     run = std::move(calm);
-    return calm_results;
-  } catch (const Error& e) {
-    problem = e.what();
-  } catch (const std::bad_alloc&) {
-    problem = "out of memory";
+    return std::move(*calm_results);
   }
   run.warnings.push_back("resolution " + std::to_string(calmer) + ", " + why.str() +
                          ", failed (" + detail::oneLine(problem) + ")");
