@@ -44,6 +44,16 @@ oneLine(std::string message)
   return message;
 }
 
+/** \brief The resolution at which a roughness (or noise) of `cells` cells at
+ * `resolution` becomes kCalmRoughness: both are lengths, so they scale together (at
+ * least GridSpec::kMinResolution). */
+inline int
+calmerResolution(int resolution, double cells)
+{
+  return std::max(GridSpec::kMinResolution,
+                  static_cast<int>(std::floor(resolution * kCalmRoughness / cells)));
+}
+
 } // namespace detail
 
 template <typename PointInT, typename PointOutT>
@@ -155,12 +165,12 @@ std::vector<CellCoord>
 VisibilityFeatureEstimation<PointInT, PointOutT>::fillCells(
   Run& run, const PointCloudIn& surface) const
 {
-  FillReport report;
   switch (run.fill) {
   case SurfaceFill::kMesh:
     return rasterizeTriangles(run.grid, mesh_->vertices, mesh_->triangles,
                               run.visibility.threads);
   case SurfaceFill::kLocalTriangles: {
+    FillReport report;
     std::vector<CellCoord> cells =
       run.resolution.copies > 1 // triangles between sites, not between copies
         ? localTriangleCells(distinctSites(surface, run.resolution.copy_radius),
@@ -490,10 +500,7 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::checkResults(const Results& re
     run.warnings.push_back(w.str());
   }
   if (!noise_mode_ && band.roughness() > kNoisyRoughness) {
-    // cells grow as the resolution drops: roughness scales with it
-    const int calmer = std::max(
-      GridSpec::kMinResolution,
-      static_cast<int>(std::floor(resolution * kCalmRoughness / band.roughness())));
+    const int calmer = detail::calmerResolution(resolution, band.roughness());
     std::ostringstream r;
     r << "the points scatter about the surface: roughness "
       << std::round(1000.0 * band.roughness()) / 1000.0
@@ -504,9 +511,7 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::checkResults(const Results& re
     run.warnings.push_back(r.str());
   }
   if (run.point_noise > kNoisyPointNoise) {
-    const int calmer = std::max(
-      GridSpec::kMinResolution,
-      static_cast<int>(std::floor(resolution * kCalmRoughness / run.point_noise)));
+    const int calmer = detail::calmerResolution(resolution, run.point_noise);
     std::ostringstream r;
     r << "the points scatter about their local planes: noise "
       << std::round(1000.0 * run.point_noise) / 1000.0

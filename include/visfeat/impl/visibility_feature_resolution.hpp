@@ -289,9 +289,7 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::calmResolution(
   // resolution at which their noise is kCalmRoughness cells, with the fill, and no
   // finer search (see kNoisyPointNoise).
   const int current = run.resolution.resolution;
-  const int calmer =
-    std::max(GridSpec::kMinResolution,
-             static_cast<int>(std::floor(current * kCalmRoughness / run.point_noise)));
+  const int calmer = detail::calmerResolution(current, run.point_noise);
   if (calmer >= current)
     return results;
   std::ostringstream why;

@@ -36,6 +36,27 @@ const char* const kTetrahedronOff = "OFF\n"
                                     "3 0 3 2\n"
                                     "3 1 2 3\n";
 
+/** What loadMeshAsCloud() gives back for a file sampled to `points` points. */
+struct SampledMesh
+{
+  bool ok = false;
+  pcl::PCLPointCloud2 cloud;
+  std::shared_ptr<const visfeat::SurfaceMesh> mesh;
+  Eigen::Vector3d offset = Eigen::Vector3d::Zero();
+  std::string summary, error;
+};
+
+SampledMesh
+sampleMesh(const std::string& path, std::size_t points)
+{
+  vt::MeshDensity density;
+  density.points = points;
+  SampledMesh out;
+  out.ok = vt::loadMeshAsCloud(path, density, out.cloud, out.mesh, out.offset,
+                               out.summary, out.error);
+  return out;
+}
+
 std::string
 plyHeader(const std::string& elements)
 {
@@ -241,17 +262,14 @@ TEST_F(MeshInput, BrokenStlFilesAreRefusedBeforeTheReader)
 
 TEST_F(MeshInput, SamplesAMeshIntoACloud)
 {
-  vt::MeshDensity density;
-  EXPECT_EQ(density.points, 1000000u) << "the documented default";
-  density.points = 1000;
-  pcl::PCLPointCloud2 cloud;
-  std::shared_ptr<const visfeat::SurfaceMesh> mesh;
-  std::string summary, error;
-  Eigen::Vector3d offset;
-  ASSERT_TRUE(vt::loadMeshAsCloud(write("t.off", kTetrahedronOff), density, cloud, mesh,
-                                  offset, summary, error))
-    << error;
-  EXPECT_EQ(offset, Eigen::Vector3d::Zero()) << "near the origin: not recentred";
+  EXPECT_EQ(vt::MeshDensity{}.points, 1000000u) << "the documented default";
+  const SampledMesh sampled = sampleMesh(write("t.off", kTetrahedronOff), 1000);
+  ASSERT_TRUE(sampled.ok) << sampled.error;
+  const pcl::PCLPointCloud2& cloud = sampled.cloud;
+  const auto& mesh = sampled.mesh;
+  const std::string& summary = sampled.summary;
+  EXPECT_EQ(sampled.offset, Eigen::Vector3d::Zero())
+    << "near the origin: not recentred";
   EXPECT_EQ(cloud.width * cloud.height, 1000u);
   // the mesh itself is kept for the band
   ASSERT_TRUE(mesh);
@@ -265,10 +283,9 @@ TEST_F(MeshInput, SamplesAMeshIntoACloud)
   EXPECT_EQ(summary.substr(summary.size() - tail.size()), tail) << summary;
 
   // The same mesh gives the same cloud.
-  pcl::PCLPointCloud2 again;
-  ASSERT_TRUE(
-    vt::loadMeshAsCloud(path("t.off"), density, again, mesh, offset, summary, error));
-  EXPECT_EQ(again.data, cloud.data);
+  const SampledMesh again = sampleMesh(path("t.off"), 1000);
+  ASSERT_TRUE(again.ok) << again.error;
+  EXPECT_EQ(again.cloud.data, cloud.data);
 }
 
 /** The vertex lines of kTetrahedronOff's tetrahedron, scaled by 9 and moved by
@@ -310,14 +327,9 @@ TEST_F(MeshInput, AFloatFormatInSurveyCoordinatesIsRefused)
   // OBJ comes in as 32-bit floats (PCL): near 4.3e6 in steps of 0.5, for a 9-unit
   // part; OFF (double) is recentred instead (the test below)
   const Eigen::Vector3d survey(512345.678, 4312345.123, 120.456);
-  vt::MeshDensity density;
-  density.points = 2000;
-  pcl::PCLPointCloud2 cloud;
-  std::shared_ptr<const visfeat::SurfaceMesh> mesh;
-  Eigen::Vector3d offset;
-  std::string summary, error;
-  EXPECT_FALSE(vt::loadMeshAsCloud(write("far.obj", tetrahedronObjAt(survey)), density,
-                                   cloud, mesh, offset, summary, error));
+  const SampledMesh far = sampleMesh(write("far.obj", tetrahedronObjAt(survey)), 2000);
+  EXPECT_FALSE(far.ok);
+  const std::string& error = far.error;
   EXPECT_NE(error.find("OBJ coordinates are read as 32-bit floats"), std::string::npos)
     << error;
   EXPECT_NE(error.find(".ply (double properties) or .off"), std::string::npos) << error;
@@ -328,15 +340,11 @@ TEST_F(MeshInput, AMeshInSurveyCoordinatesIsRecentredBeforeSampling)
   // the tetrahedron near (512345.678, 4312345.123, 120.456): float there resolves
   // 0.25-0.5 m; recentred, the samples keep micrometres
   const Eigen::Vector3d survey(512345.678, 4312345.123, 120.456);
-  vt::MeshDensity density;
-  density.points = 2000;
-  pcl::PCLPointCloud2 cloud;
-  std::shared_ptr<const visfeat::SurfaceMesh> mesh;
-  Eigen::Vector3d offset;
-  std::string summary, error;
-  ASSERT_TRUE(vt::loadMeshAsCloud(write("far.off", tetrahedronOffAt(survey)), density,
-                                  cloud, mesh, offset, summary, error))
-    << error;
+  const SampledMesh far = sampleMesh(write("far.off", tetrahedronOffAt(survey)), 2000);
+  ASSERT_TRUE(far.ok) << far.error;
+  const pcl::PCLPointCloud2& cloud = far.cloud;
+  const auto& mesh = far.mesh;
+  const Eigen::Vector3d& offset = far.offset;
   // the bounding box's centre rounded to tens (extent 9)
   EXPECT_EQ(offset, Eigen::Vector3d(512350.0, 4312350.0, 120.0));
   ASSERT_TRUE(mesh);
@@ -347,14 +355,11 @@ TEST_F(MeshInput, AMeshInSurveyCoordinatesIsRecentredBeforeSampling)
   for (const pcl::PCLPointField& f : cloud.fields)
     EXPECT_EQ(f.datatype, pcl::PCLPointField::FLOAT64) << f.name;
   // the same samples as the mesh already at its recentred place, moved by the offset
-  pcl::PCLPointCloud2 near;
-  std::shared_ptr<const visfeat::SurfaceMesh> near_mesh;
-  Eigen::Vector3d near_offset;
-  ASSERT_TRUE(vt::loadMeshAsCloud(write("near.off", tetrahedronOffAt(survey - offset)),
-                                  density, near, near_mesh, near_offset, summary,
-                                  error))
-    << error;
-  EXPECT_EQ(near_offset, Eigen::Vector3d::Zero());
+  const SampledMesh sampled_near =
+    sampleMesh(write("near.off", tetrahedronOffAt(survey - offset)), 2000);
+  ASSERT_TRUE(sampled_near.ok) << sampled_near.error;
+  const pcl::PCLPointCloud2& near = sampled_near.cloud;
+  EXPECT_EQ(sampled_near.offset, Eigen::Vector3d::Zero());
   ASSERT_EQ(cloud.width, near.width);
   double worst = 0.0;
   for (std::size_t i = 0; i < cloud.width; ++i) {
@@ -370,22 +375,18 @@ TEST_F(MeshInput, AMeshInSurveyCoordinatesIsRecentredBeforeSampling)
 
 TEST_F(MeshInput, RefusesMeshesWithoutArea)
 {
-  vt::MeshDensity density;
-  density.points = 10;
-  pcl::PCLPointCloud2 cloud;
-  std::shared_ptr<const visfeat::SurfaceMesh> mesh;
-  std::string summary, error;
   const std::string none = write("none.off", "OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n");
-  Eigen::Vector3d offset;
-  EXPECT_FALSE(vt::loadMeshAsCloud(none, density, cloud, mesh, offset, summary, error));
-  EXPECT_EQ(error, "'" + none + "': the mesh has no faces");
+  const SampledMesh faceless = sampleMesh(none, 10);
+  EXPECT_FALSE(faceless.ok);
+  EXPECT_EQ(faceless.error, "'" + none + "': the mesh has no faces");
   const std::string flat =
     write("flat.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n2 0 0\n3 0 1 2\n");
-  EXPECT_FALSE(vt::loadMeshAsCloud(flat, density, cloud, mesh, offset, summary, error));
-  EXPECT_FALSE(mesh);
-  EXPECT_EQ(error, "'" + flat +
-                     "': the mesh has zero area (all 1 triangles are "
-                     "degenerate)");
+  const SampledMesh flat_mesh = sampleMesh(flat, 10);
+  EXPECT_FALSE(flat_mesh.ok);
+  EXPECT_FALSE(flat_mesh.mesh);
+  EXPECT_EQ(flat_mesh.error, "'" + flat +
+                               "': the mesh has zero area (all 1 triangles are "
+                               "degenerate)");
 }
 
 } // namespace
