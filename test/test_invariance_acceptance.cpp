@@ -139,7 +139,7 @@ secondsSince(std::chrono::steady_clock::time_point start)
 
 /** One generated model: a reference rotation must give the true counts; 20 further
  * rotations and the reference sample moved to survey coordinates give the same. */
-#ifndef VISFEAT_COPIES_ONLY // the rotations: label invariance, test.sh --invariance
+#ifndef VISFEAT_COPIES_ONLY // the rotations: label invariance, test.sh --full
 class Invariance : public ::testing::TestWithParam<std::string>
 {};
 
