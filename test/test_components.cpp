@@ -1,6 +1,7 @@
 // ComponentSet on hand-painted sheets: the 6-connected flood of the cells at or above
 // min_radius, the numbering by smallest cell id, the vertex / edge / face classes in
-// the raw (paper) and default modes, and the parameter checks.
+// the raw (paper) and default modes, the cores of faces too narrow to reach
+// min_radius (narrow_face_persistence), and the parameter checks.
 
 #include "sheet_bands.h"
 
@@ -9,7 +10,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 
 namespace {
@@ -138,6 +141,98 @@ validationMessage(const ComponentParameters& p, int max_radius)
   return "";
 }
 
+/** Radius across a sheet whose creases run along y at x = 40 and x = 52: the distance
+ * to the nearest crease plus `valley` (the radius at the creases), capped at 16: two
+ * faces 40 cells wide with cores and one of 12 cells between the creases, whose
+ * middle (x = 46) peaks at valley + 6. */
+visfeat_test::Sheet
+narrowFaceSheet(int valley)
+{
+  return visfeat_test::sheetFromRadius(92, 40, 16, [valley](int x, int) {
+    return std::min(std::min(std::abs(x - 40), std::abs(x - 52)) + valley, 16);
+  });
+}
+
+TEST(NarrowFaceCores, AFaceNarrowerThanACoreGetsOneBetweenItsCreases)
+{
+  const auto sheet = narrowFaceSheet(0);
+  ComponentParameters p; // min_radius 16
+  p.narrow_face_persistence = 0;
+  EXPECT_EQ(ComponentSet::extract(sheet.band, sheet.map, p, false).components().size(),
+            2u); // the paper's threshold: the two wide faces only
+  p.narrow_face_persistence = 3;
+  const ComponentSet set = ComponentSet::extract(sheet.band, sheet.map, p, false);
+  ASSERT_EQ(set.components().size(), 3u);
+  // peak 6, saddle 0: the core is the upper half, radius >= 3, x in 43..49
+  const visfeat::Component& narrow = set.components()[2];
+  EXPECT_EQ(narrow.feature_class, FeatureClass::kFace);
+  EXPECT_EQ(narrow.cells, 7u * 40u);
+  EXPECT_EQ(narrow.depth, 3u); // from its border x = 43 or 49 to its middle column
+  for (int y = 0; y < 40; ++y)
+    for (int x = 0; x < 92; ++x) {
+      const std::uint32_t label = set.cellLabels()[std::size_t(sheet.at(x, y))];
+      EXPECT_EQ(label == 3u, x >= 43 && x <= 49) << x << "," << y;
+    }
+  // the raw mode is the paper's: no narrow cores
+  EXPECT_EQ(ComponentSet::extract(sheet.band, sheet.map, p, true).components().size(),
+            2u);
+}
+
+TEST(NarrowFaceCores, APeakLessPersistentThanTheParameterGetsNone)
+{
+  // creases whose valleys keep 4 rings: the narrow face peaks at 10, 6 above them
+  const auto sheet = narrowFaceSheet(4);
+  ComponentParameters p;
+  p.narrow_face_persistence = 7;
+  EXPECT_EQ(ComponentSet::extract(sheet.band, sheet.map, p, false).components().size(),
+            2u);
+  p.narrow_face_persistence = 6;
+  const ComponentSet set = ComponentSet::extract(sheet.band, sheet.map, p, false);
+  ASSERT_EQ(set.components().size(), 3u);
+  // cut at 4 + 3 = 7: x in 43..49 again
+  EXPECT_EQ(set.components()[2].cells, 7u * 40u);
+}
+
+TEST(NarrowFaceCores, ANestedPeakKeepsItsOwnCoreAndCoresNeverTouch)
+{
+  // no cell reaches min_radius: a peak of 12 at x = 15 (its part ends at 0) and, past
+  // a valley of 7 at x = 20, a peak of 10 at x = 23 (persistence 3)
+  const auto sheet = visfeat_test::sheetFromRadius(40, 80, 16, [](int x, int) {
+    if (x <= 20)
+      return std::max(0, 12 - std::abs(x - 15));
+    if (x <= 23)
+      return 7 + (x - 20);
+    return std::max(0, 10 - (x - 23));
+  });
+  ComponentParameters p;
+  p.narrow_face_persistence = 3;
+  const ComponentSet set = ComponentSet::extract(sheet.band, sheet.map, p, false);
+  ASSERT_EQ(set.components().size(), 2u);
+  // the higher cut first: the nested peak's upper half, radius >= 7 + 2 = 9 (x 22..24);
+  // then the wide peak's, radius >= 6 (x 9..27), less the cells next to the first
+  // core (x 21) and what only they reach (x 25..27)
+  const auto label = [&](int x) {
+    return set.cellLabels()[std::size_t(sheet.at(x, 40))];
+  };
+  for (int x = 0; x < 40; ++x) {
+    const std::uint32_t expected = x >= 22 && x <= 24  ? 1u
+                                   : x >= 9 && x <= 20 ? 2u
+                                                       : 0u;
+    EXPECT_EQ(label(x), expected) << "x " << x;
+  }
+  EXPECT_EQ(set.components()[0].cells, 3u * 80u);
+  EXPECT_EQ(set.components()[1].cells, 12u * 80u);
+  for (std::size_t c = 0; c < sheet.band.size(); ++c) {
+    const std::uint32_t a = set.cellLabels()[c];
+    for (const visfeat::CellId n :
+         sheet.band.neighbours(static_cast<visfeat::CellId>(c)))
+      if (a != 0 && n != visfeat::kNoCell) {
+        const std::uint32_t b = set.cellLabels()[static_cast<std::size_t>(n)];
+        EXPECT_TRUE(b == 0 || b == a) << "cores " << a << " and " << b << " touch";
+      }
+  }
+}
+
 TEST(ComponentSetValidate, NamesTheParameterItsRangeAndUnit)
 {
   EXPECT_EQ(validationMessage(smallParameters(), 3), "");
@@ -167,6 +262,10 @@ TEST(ComponentSetValidate, NamesTheParameterItsRangeAndUnit)
   p.face_min_depth = 0;
   EXPECT_EQ(validationMessage(p, 4),
             "face_min_depth 0 is out of range [1, 1000] (cells)");
+  p = smallParameters();
+  p.narrow_face_persistence = -1;
+  EXPECT_EQ(validationMessage(p, 4),
+            "narrow_face_persistence -1 is out of range [0, 64] (rings)");
 }
 
 TEST(ComponentSetValidate, ExtractChecksAgainstTheMapsCap)

@@ -32,6 +32,7 @@ set(VISFEAT_BAD_INPUT_CASES
   "resolution_text|-resolution expects an integer, got 'abc'"
   "resolution_over_memory|more than the limit of 1.0 MiB: lower the resolution"
   "threads_negative|-threads must be in&&got -1"
+  "narrow_persistence_huge|-narrow_persistence must be in&&got 99"
   "opacity_nan|-opacity expects a number, got 'nan'"
   "min_radius_above_max|-min_radius 20 exceeds -max_radius 10"
   "paper_noise_and_noise_mode|-paper_noise and -noise_mode are two settings"

@@ -255,6 +255,7 @@ configureEstimator(Estimator& estimator,
   estimator.setMaxRadius(opt.max_radius);
   estimator.setMinRadius(opt.min_radius);
   estimator.setVertexMaxCells(opt.vertex_cells);
+  estimator.setNarrowFacePersistence(opt.narrow_persistence);
   estimator.setDimensionality(opt.dimensionality);
   estimator.setMinCreaseAngle(opt.min_crease_angle);
   estimator.setRawMode(opt.raw);

@@ -31,7 +31,7 @@ valueOptions()
     "-mesh_points",     "-mesh_spacing",   "-png",
     "-png_radius",      "-png_size",       "-fill",
     "-fill_neighbours", "-fill_gap",       "-fill_edge",
-    "-fill_inset",      "-fill_votes"};
+    "-fill_inset",      "-fill_votes",     "-narrow_persistence"};
   return names;
 }
 
@@ -88,6 +88,11 @@ printHelp(const char* program)
              "(default: ");
   print_value("%d", kDefaultVertexCells);
   print_info(" cells)\n");
+  print_info(
+    "    -narrow_persistence P = a face too narrow for a core gets one when its "
+    "peak of the map stands P rings above its creases' valleys (default: ");
+  print_value("%d", kDefaultNarrowPersistence);
+  print_info(" rings; 0 = off)\n");
   print_info("    -dimensionality D = raw mode: edge if mean same-component "
              "6-neighbours < D (default: ");
   print_value("%g", kDefaultDimensionality);
@@ -197,6 +202,8 @@ readValues(const Arguments& args, Options& opt, std::string& error)
       !integer("-max_radius", Visibility::kMaxRadiusRange, opt.max_radius) ||
       !integer("-min_radius", Components::kMinRadiusRange, opt.min_radius) ||
       !integer("-vertex_cells", Components::kVertexMaxCellsRange, opt.vertex_cells) ||
+      !integer("-narrow_persistence", Components::kNarrowFacePersistenceRange,
+               opt.narrow_persistence) ||
       !real("-dimensionality", Components::kDimensionalityRange, opt.dimensionality) ||
       !real("-min_crease_angle", visfeat::CreaseAngleParameters::kMinCreaseAngleRange,
             opt.min_crease_angle) ||

@@ -22,6 +22,8 @@ namespace visfeat_tools {
 // resolution: without -resolution it follows from the point spacing
 // (visfeat::estimateResolution, common/automatic_resolution.h).
 constexpr int kDefaultMinRadius = visfeat::kDefaultMinRadius;
+constexpr int kDefaultNarrowPersistence =
+  visfeat::ComponentParameters::kDefaultNarrowFacePersistence;
 constexpr int kDefaultVertexCells =
   visfeat::ComponentParameters::kDefaultVertexMaxCells;
 constexpr double kDefaultDimensionality =
@@ -38,6 +40,7 @@ struct Options
   int min_radius = kDefaultMinRadius;
   int max_radius = 0; // 0 = min_radius (the estimator's automatic cap)
   int vertex_cells = kDefaultVertexCells;
+  int narrow_persistence = kDefaultNarrowPersistence;
   double dimensionality = kDefaultDimensionality;
   double min_crease_angle = visfeat::CreaseAngleParameters::kDefaultMinCreaseAngle;
   bool raw = false;

@@ -170,6 +170,19 @@ public:
     return segmentation_parameters_.components.vertex_max_cells;
   }
 
+  /** \brief Faces narrower than a core get one when their peak of the map stands this
+   * many rings above their creases' valleys (ComponentParameters::
+   * narrow_face_persistence; issue 14). Default 3, range
+   * ComponentParameters::kNarrowFacePersistenceRange (rings); 0 = off. */
+  inline void setNarrowFacePersistence(int rings)
+  {
+    segmentation_parameters_.components.narrow_face_persistence = rings;
+  }
+  inline int getNarrowFacePersistence() const
+  {
+    return segmentation_parameters_.components.narrow_face_persistence;
+  }
+
   /** \brief Raw mode's edge/face threshold on mean same-component 6-neighbours.
    * Default 3.5 (the paper's), range ComponentParameters::kDimensionalityRange. */
   inline void setDimensionality(double dimensionality)

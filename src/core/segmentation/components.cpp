@@ -1,6 +1,8 @@
 #include <visfeat/core/common/error.h>
 #include <visfeat/core/segmentation/components.h>
+#include <visfeat/core/segmentation/narrow_faces.h>
 
+#include <algorithm>
 #include <sstream>
 
 namespace visfeat {
@@ -19,12 +21,55 @@ ComponentParameters::validate(int max_radius) const
   checkRange("dimensionality", dimensionality, kDimensionalityRange,
              "mean same-component 6-neighbours");
   checkRange("face_min_depth", face_min_depth, kFaceMinDepthRange, "cells");
+  checkRange("narrow_face_persistence", narrow_face_persistence,
+             kNarrowFacePersistenceRange, "rings");
 }
 
 void
 ComponentSet::validate(const ComponentParameters& p, int max_radius)
 {
   p.validate(max_radius);
+}
+
+Component
+ComponentSet::measure(const VoxelBand& band,
+                      const std::vector<CellId>& members,
+                      std::vector<std::uint32_t>& depth) const
+{
+  const std::uint32_t label = labels_[static_cast<std::size_t>(members.front())];
+  Component component;
+  component.cells = static_cast<std::uint32_t>(members.size());
+  // Dimensionality (paper) and depth: BFS inwards from the border cells.
+  std::uint64_t same = 0;
+  std::vector<CellId> frontier;
+  for (const CellId c : members) {
+    bool border = false;
+    for (const CellId nb : band.neighbours(c)) {
+      if (nb == kNoCell)
+        continue; // off the band (the band is a surface: most cells have such sides)
+      if (labels_[static_cast<std::size_t>(nb)] == label)
+        ++same;
+      else
+        border = true; // a band neighbour outside the component
+    }
+    depth[static_cast<std::size_t>(c)] = border ? 0 : std::uint32_t(-1);
+    if (border)
+      frontier.push_back(c);
+  }
+  for (std::size_t head = 0; head < frontier.size(); ++head) {
+    const std::uint32_t d = depth[static_cast<std::size_t>(frontier[head])] + 1;
+    for (const CellId nb : band.neighbours(frontier[head]))
+      if (nb != kNoCell && labels_[static_cast<std::size_t>(nb)] == label &&
+          depth[static_cast<std::size_t>(nb)] > d) {
+        depth[static_cast<std::size_t>(nb)] = d;
+        frontier.push_back(nb);
+        component.depth = std::max(component.depth, d);
+      }
+  }
+  if (frontier.empty()) // the component is a whole closed piece of the band
+    component.depth = component.cells;
+  component.mean_neighbours = static_cast<float>(double(same) / double(members.size()));
+  return component;
 }
 
 ComponentSet
@@ -39,7 +84,6 @@ ComponentSet::extract(const VoxelBand& band,
   set.labels_.assign(n, 0);
   std::vector<CellId> members;
   std::vector<std::uint32_t> depth(n, 0);
-  std::vector<CellId> frontier;
   for (std::size_t seed = 0; seed < n; ++seed) {
     if (set.labels_[seed] != 0 || map.radii()[seed] < parameters.min_radius)
       continue;
@@ -53,40 +97,7 @@ ComponentSet::extract(const VoxelBand& band,
           set.labels_[static_cast<std::size_t>(nb)] = label;
           members.push_back(nb);
         }
-
-    // Dimensionality (paper) and depth: BFS inwards from the border cells.
-    Component component;
-    component.cells = static_cast<std::uint32_t>(members.size());
-    std::uint64_t same = 0;
-    frontier.clear();
-    for (const CellId c : members) {
-      bool border = false;
-      for (const CellId nb : band.neighbours(c)) {
-        if (nb == kNoCell)
-          continue; // off the band (the band is a surface: most cells have such sides)
-        if (set.labels_[static_cast<std::size_t>(nb)] == label)
-          ++same;
-        else
-          border = true; // a band neighbour outside the component
-      }
-      depth[static_cast<std::size_t>(c)] = border ? 0 : std::uint32_t(-1);
-      if (border)
-        frontier.push_back(c);
-    }
-    for (std::size_t head = 0; head < frontier.size(); ++head) {
-      const std::uint32_t d = depth[static_cast<std::size_t>(frontier[head])] + 1;
-      for (const CellId nb : band.neighbours(frontier[head]))
-        if (nb != kNoCell && set.labels_[static_cast<std::size_t>(nb)] == label &&
-            depth[static_cast<std::size_t>(nb)] > d) {
-          depth[static_cast<std::size_t>(nb)] = d;
-          frontier.push_back(nb);
-          component.depth = std::max(component.depth, d);
-        }
-    }
-    if (frontier.empty()) // the component is a whole closed piece of the band
-      component.depth = component.cells;
-    component.mean_neighbours =
-      static_cast<float>(double(same) / double(members.size()));
+    Component component = set.measure(band, members, depth);
     if (members.size() <= static_cast<std::size_t>(parameters.vertex_max_cells))
       component.feature_class = FeatureClass::kVertex;
     else if (raw)
@@ -100,7 +111,57 @@ ComponentSet::extract(const VoxelBand& band,
           : FeatureClass::kEdge;
     set.components_.push_back(component);
   }
+  if (!raw && parameters.narrow_face_persistence > 0)
+    set.addNarrowFaceCores(band, map, parameters, depth);
   return set;
+}
+
+void
+ComponentSet::addNarrowFaceCores(const VoxelBand& band,
+                                 const VisibilityMap& map,
+                                 const ComponentParameters& parameters,
+                                 std::vector<std::uint32_t>& depth)
+{
+  const int min_radius = parameters.min_radius;
+  std::vector<NarrowFace> faces = narrowFaces(
+    band, map, min_radius, parameters.narrow_face_persistence,
+    static_cast<std::size_t>(min_radius) * static_cast<std::size_t>(min_radius));
+  // Each core is the upper half of its peak; the highest cut first, so that a peak
+  // nested in a wider one keeps its own core.
+  const auto cut = [](const NarrowFace& f) {
+    return f.saddle + (f.peak - f.saddle + 1) / 2;
+  };
+  std::stable_sort(
+    faces.begin(), faces.end(),
+    [&](const NarrowFace& a, const NarrowFace& b) { return cut(a) > cut(b); });
+  std::vector<CellId> members;
+  for (const NarrowFace& face : faces) {
+    const auto label = static_cast<std::uint32_t>(components_.size() + 1);
+    // a cell next to another core stays out: cores never touch
+    const auto free = [&](CellId c) {
+      if (labels_[static_cast<std::size_t>(c)] != 0)
+        return false;
+      for (const CellId nb : band.neighbours(c))
+        if (nb != kNoCell && labels_[static_cast<std::size_t>(nb)] != 0 &&
+            labels_[static_cast<std::size_t>(nb)] != label)
+          return false;
+      return true;
+    };
+    if (!free(face.peak_cell))
+      continue;
+    const int level = cut(face);
+    members.assign(1, face.peak_cell);
+    labels_[static_cast<std::size_t>(face.peak_cell)] = label;
+    for (std::size_t head = 0; head < members.size(); ++head)
+      for (const CellId nb : band.neighbours(members[head]))
+        if (nb != kNoCell && map.radius(nb) >= level && free(nb)) {
+          labels_[static_cast<std::size_t>(nb)] = label;
+          members.push_back(nb);
+        }
+    Component component = measure(band, members, depth);
+    component.feature_class = FeatureClass::kFace; // a face by what it is, any depth
+    components_.push_back(component);
+  }
 }
 
 } // namespace visfeat

@@ -75,7 +75,8 @@ narrowFaces(const VoxelBand& band,
     // the part of root r ends at level (its saddle)
     if (tree.peak[r] < min_radius && tree.peak[r] - level >= min_persistence &&
         tree.cells[r] >= min_cells)
-      faces.push_back(NarrowFace{tree.peak[r], level, tree.cells[r]});
+      faces.push_back(NarrowFace{tree.peak[r], level, tree.cells[r],
+                                 static_cast<CellId>(tree.peak_cell[r])});
   };
   for (const CellId id : order) {
     const auto c = static_cast<std::size_t>(id);

@@ -40,10 +40,28 @@ struct ComponentParameters
    * Edge ridges are 2-4 cells wide (depth <= 2), face cores span tens of cells.
    * Range kFaceMinDepthRange (cells). */
   int face_min_depth = kDefaultFaceMinDepth;
+  /** \brief Default mode: a face too narrow for a core (narrower than about
+   * 2 min_radius cells, so its middle peaks below min_radius between the valleys of
+   * its creases) gets one when its peak stands at least this many rings above the
+   * valley that separates it from every higher part of the map (its persistence,
+   * visfeat::narrowFaces()) over at least min_radius^2 cells. Its core is the upper
+   * half of the peak (cells at or above saddle + ceil((peak - saddle) / 2)), kept one
+   * cell away from every other core, and is a face whatever its depth. 0 = off (the
+   * paper's single threshold). Default kDefaultNarrowFacePersistence; range
+   * kNarrowFacePersistenceRange (rings). Lower values also split curved surfaces
+   * whose radius ripples (tessellated cylinders); higher ones lose narrow faces. */
+  int narrow_face_persistence = kDefaultNarrowFacePersistence;
 
   static constexpr int kDefaultVertexMaxCells = 25;
   static constexpr double kDefaultDimensionality = 3.5;
   static constexpr int kDefaultFaceMinDepth = 4;
+  /** \brief 3 rings, as the resolution search's kNarrowFacePersistence: the 7
+   * generated models (10,000 points to dense, 256 cells) have no peak of persistence 3
+   * over min_radius^2 cells, so their results do not change; the risers of the stepped
+   * block (21 cells, dense cloud) peak at 13-14 rings, 5-6 above their creases'
+   * valleys; 4 and 5 found fewer of the public pinion's and fandisk's faces (README,
+   * Method). */
+  static constexpr int kDefaultNarrowFacePersistence = 3;
 
   /** \brief [1, VisibilityMap::kMaxRadius] rings; also at most max_radius. */
   static constexpr ParameterRange<int> kMinRadiusRange{1, VisibilityMap::kMaxRadius};
@@ -53,6 +71,9 @@ struct ComponentParameters
   static constexpr ParameterRange<double> kDimensionalityRange{0.0, 6.0};
   /** \brief [1, 1000] cells. */
   static constexpr ParameterRange<int> kFaceMinDepthRange{1, 1000};
+  /** \brief [0, VisibilityMap::kMaxRadius] rings; 0 = off. */
+  static constexpr ParameterRange<int> kNarrowFacePersistenceRange{
+    0, VisibilityMap::kMaxRadius};
 
   /** \brief Throws visfeat::Error naming the first parameter out of range, with its
    * value, range and unit; min_radius must also be at most max_radius (the cap of the
@@ -72,7 +93,9 @@ struct Component
 };
 
 /** \brief Components of the visibility map: 6-connected floods of the cells whose
- * radius reaches min_radius, numbered 1.. in the order of their smallest cell id.
+ * radius reaches min_radius, numbered 1.. in the order of their smallest cell id; in
+ * default mode then the cores of narrow faces (narrow_face_persistence), numbered on
+ * from the highest cut.
  *
  * Classification: vertex if cells <= vertex_max_cells; otherwise, raw mode: edge if
  * mean_neighbours < dimensionality, else face; default mode: face if depth >=
@@ -102,6 +125,18 @@ public:
   const std::vector<Component>& components() const { return components_; }
 
 private:
+  /** Cells, depth and mean neighbours of the component of `members` (labelled);
+   * depth: per cell scratch of the band's size. */
+  Component measure(const VoxelBand& band,
+                    const std::vector<CellId>& members,
+                    std::vector<std::uint32_t>& depth) const;
+  /** Appends the cores of narrow faces (ComponentParameters::narrow_face_persistence).
+   */
+  void addNarrowFaceCores(const VoxelBand& band,
+                          const VisibilityMap& map,
+                          const ComponentParameters& parameters,
+                          std::vector<std::uint32_t>& depth);
+
   std::vector<std::uint32_t> labels_;
   std::vector<Component> components_;
 };

@@ -27,6 +27,8 @@ struct NarrowFace
   int saddle = 0;
   /** \brief Cells of the face above the saddle. */
   std::size_t cells = 0;
+  /** \brief A cell at the peak (the lowest id among the part's highest cells). */
+  CellId peak_cell = kNoCell;
 };
 
 /** \brief The narrow faces of a map (see NarrowFace): peaks below min_radius whose
