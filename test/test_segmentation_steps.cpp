@@ -7,6 +7,7 @@
 #include "sheet_bands.h"
 
 #include <core/segmentation/segmentation_steps.h>
+#include <visfeat/core/common/error.h>
 #include <visfeat/core/segmentation/feature_segmentation.h>
 
 #include <gtest/gtest.h>
@@ -493,6 +494,42 @@ TEST(CoreLine, FitsAStraightRunOfCells)
   EXPECT_DOUBLE_EQ(stub.length, 7.0);
   EXPECT_FALSE(stub.straight());
   EXPECT_FALSE(line.onLine(stub));
+}
+
+// addEdgeRegions (the contact creases): the listed face cells become a new edge
+// region, other cells keep their labels, labels are renumbered by smallest cell id.
+TEST(AddEdgeRegions, FaceCellsOfTheListBecomeAnEdgeRegion)
+{
+  // one face of 10 x 4 cells and a row below it without a core (raw mode: the cores
+  // only); a crease two cells wide down its middle
+  const auto sheet = visfeat_test::paintSheet(
+    {"3333333333", "3333333333", "3333333333", "3333333333", "1111111111"}, kCap);
+  SegmentationParameters p = smallParameters();
+  p.raw = true;
+  p.components.dimensionality = 2.0;
+  FeatureSegmentation seg = FeatureSegmentation::compute(sheet.band, sheet.map, p);
+  ASSERT_EQ(seg.regions().size(), 1u);
+  ASSERT_EQ(seg.regions()[0].feature_class, visfeat::FeatureClass::kFace);
+  std::vector<visfeat::CellId> crease, stray;
+  for (int y = 0; y < 5; ++y) {
+    crease.push_back(sheet.at(4, y)); // y = 4: unlabelled (radius 1), stays so
+    crease.push_back(sheet.at(5, y));
+  }
+  const std::vector<std::uint32_t> renumbered = seg.addEdgeRegions({crease, stray});
+  ASSERT_EQ(seg.regions().size(), 2u); // the empty list adds no region
+  ASSERT_EQ(renumbered.size(), 2u);
+  EXPECT_EQ(renumbered[1], 1u); // the face keeps label 1 (its smallest cell id, x = 0)
+  for (int y = 0; y < 5; ++y)
+    for (int x = 0; x < 10; ++x) {
+      const std::uint32_t label = seg.cellLabels()[std::size_t(sheet.at(x, y))];
+      const std::uint32_t expected = y == 4 ? 0u : (x == 4 || x == 5) ? 2u : 1u;
+      EXPECT_EQ(label, expected) << x << "," << y;
+    }
+  EXPECT_EQ(seg.regions()[1].feature_class, visfeat::FeatureClass::kEdge);
+  EXPECT_EQ(seg.regions()[1].cells, 8u);
+  EXPECT_EQ(seg.regions()[0].cells, 32u);
+  EXPECT_THROW(seg.addEdgeRegions({{static_cast<visfeat::CellId>(1000)}}),
+               visfeat::Error);
 }
 
 } // namespace

@@ -515,8 +515,12 @@ private:
   std::vector<CreaseAngle>
   mergeShallowCreases(Results& results, const Run& run, PointCloudOut& output) const;
   /** After the graph: the crease rule, then the stray regions (strayRegionMerge);
-   * each edge's crease angle into the graph. */
+   * each edge's crease angle into the graph; then the contact creases. */
   void cleanUpRegions(Results& results, const Run& run, PointCloudOut& output) const;
+  /** Faces that still touch across a turn of at least the minimum crease angle, with
+   * no edge between them anywhere, get an edge region along the crease
+   * (locateContactCreases()); cells, points, graph and crease angles follow. */
+  void addContactCreases(Results& results, const Run& run, PointCloudOut& output) const;
 
   bool fail(const std::string& message);
 

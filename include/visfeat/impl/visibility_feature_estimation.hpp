@@ -384,6 +384,7 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::cleanUpRegions(
         results.graph.node(now).feature_class == FeatureClass::kEdge)
       results.graph.setCreaseAngle(now, angles[r].degrees);
   }
+  addContactCreases(results, run, output);
 }
 
 template <typename PointInT, typename PointOutT>
@@ -590,7 +591,8 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::computeFeature(PointCloudOut& 
 
 } // namespace visfeat
 
-// the resolution, its search, the grid and the fill
+// the creases where faces touch; the resolution, its search, the grid and the fill
+#include <visfeat/impl/visibility_feature_contacts.hpp>
 #include <visfeat/impl/visibility_feature_resolution.hpp>
 
 #define PCL_INSTANTIATE_VisibilityFeatureEstimation(T, OUTT)                           \

@@ -152,4 +152,38 @@ FeatureSegmentation::mergeRegions(const std::vector<std::uint32_t>& into)
   return renumbered;
 }
 
+std::vector<std::uint32_t>
+FeatureSegmentation::addEdgeRegions(const std::vector<std::vector<CellId>>& cells)
+{
+  const std::size_t n = regions_.size();
+  std::vector<FeatureClass> classes(n + cells.size() + 1, FeatureClass::kEdge);
+  classes[0] = FeatureClass::kNone;
+  for (std::size_t l = 1; l <= n; ++l)
+    classes[l] = regions_[l - 1].feature_class;
+  const std::vector<std::uint32_t> old_labels = labels_;
+  for (std::size_t r = 0; r < cells.size(); ++r)
+    for (const CellId c : cells[r]) {
+      if (c < 0 || static_cast<std::size_t>(c) >= labels_.size())
+        throw Error("addEdgeRegions: cell " + std::to_string(c) +
+                    " is not one of the " + std::to_string(labels_.size()) +
+                    " band cells");
+      std::uint32_t& label = labels_[static_cast<std::size_t>(c)];
+      if (label != 0 && label <= n && classes[label] == FeatureClass::kFace)
+        label = static_cast<std::uint32_t>(n + 1 + r);
+    }
+  regions_ = numberRegions(labels_, classes, cores_.cellLabels());
+  std::vector<std::uint32_t> renumbered(n + 1, 0);
+  // an old region keeps a cell that stayed in it (cells moved to new regions do not
+  // tell): its new label is the label of any such cell
+  std::vector<char> moved(labels_.size(), 0);
+  for (const std::vector<CellId>& list : cells)
+    for (const CellId c : list)
+      moved[static_cast<std::size_t>(c)] = 1;
+  for (std::size_t c = 0; c < labels_.size(); ++c)
+    if (old_labels[c] != 0 &&
+        (!moved[c] || classes[old_labels[c]] != FeatureClass::kFace))
+      renumbered[old_labels[c]] = labels_[c];
+  return renumbered;
+}
+
 } // namespace visfeat

@@ -187,6 +187,16 @@ public:
    * \throws visfeat::Error when into has the wrong size or a label out of range. */
   std::vector<std::uint32_t> mergeRegions(const std::vector<std::uint32_t>& into);
 
+  /** \brief New edge regions, one per list of cells (e.g. the creases where two faces
+   * touch, locateContactCreases()): the listed cells that belong to a face region take
+   * the new region's label (other cells keep theirs; a list left with no face cell
+   * adds no region). Labels are then renumbered as mergeRegions() does.
+   * \return per old label (index 0 unused, 0 -> 0), its new label; the new regions'
+   * labels are those of their cells in cellLabels().
+   * \throws visfeat::Error for a cell id out of range. */
+  std::vector<std::uint32_t>
+  addEdgeRegions(const std::vector<std::vector<CellId>>& cells);
+
 private:
   ComponentSet cores_;
   std::vector<std::uint32_t> labels_;

@@ -1,0 +1,100 @@
+// VisibilityFeatureEstimation (not for inclusion on its own): edges along the creases
+// where two faces touch without an edge region between them.
+#pragma once
+
+#include <visfeat/core/graph/contact_creases.h>
+#include <visfeat/impl/visibility_feature_estimation.hpp>
+
+#include <array>
+#include <cmath>
+#include <set>
+#include <vector>
+
+namespace visfeat {
+
+template <typename PointInT, typename PointOutT>
+void
+VisibilityFeatureEstimation<PointInT, PointOutT>::addContactCreases(
+  Results& results, const Run& run, PointCloudOut& output) const
+{
+  const double min_angle = run.crease_angles.min_crease_angle;
+  if (!(min_angle > 0.0))
+    return; // the rule is off: every region stays as the map made it
+  std::vector<Eigen::Vector3d> points(output.size());
+  std::vector<std::uint32_t> labels(output.size());
+  for (std::size_t i = 0; i < output.size(); ++i) {
+    points[i] = output[i].getVector3fMap().template cast<double>();
+    labels[i] = output[i].label;
+  }
+  const std::vector<FeatureClass> classes = results.segmentation.regionClasses();
+  // Two faces an edge separates somewhere touch elsewhere only where the watershed
+  // spills across that edge's end (the filleted box's corners, the box with hole's
+  // rim): no crease of their own.
+  std::set<std::array<std::uint32_t, 2>> separated;
+  for (std::uint32_t id = 1; id <= results.graph.size(); ++id) {
+    if (results.graph.node(id).feature_class != FeatureClass::kEdge)
+      continue;
+    const std::vector<std::uint32_t> faces = results.graph.facesOfEdge(id);
+    for (std::size_t i = 0; i < faces.size(); ++i)
+      for (std::size_t j = i + 1; j < faces.size(); ++j)
+        separated.insert(
+          {{std::min(faces[i], faces[j]), std::max(faces[i], faces[j])}});
+  }
+  const std::vector<ContactCrease> creases = locateContactCreases(
+    results.band, results.segmentation.cellLabels(), points, labels, classes, separated,
+    run.crease_angles.window_cells, min_angle, kContactCreaseHalfWidth);
+  if (creases.empty())
+    return;
+
+  // the edges' measured turns, kept across the renumbering
+  std::vector<double> angle_of(results.graph.size() + 1,
+                               std::numeric_limits<double>::quiet_NaN());
+  for (std::uint32_t id = 1; id <= results.graph.size(); ++id)
+    angle_of[id] = results.graph.node(id).crease_angle;
+  std::vector<std::vector<CellId>> cells;
+  for (const ContactCrease& crease : creases)
+    cells.push_back(crease.cells);
+  const std::vector<std::uint32_t> renumbered =
+    results.segmentation.addEdgeRegions(cells);
+  const std::vector<std::uint32_t>& cell_labels = results.segmentation.cellLabels();
+  const std::vector<Region>& regions = results.segmentation.regions();
+
+  // Points: those of a moved cell take its new region, the others their region's new
+  // label (a point keeps the label the skeleton gave it).
+  std::vector<char> moved(results.band.size(), 0);
+  for (const std::vector<CellId>& list : cells)
+    for (const CellId c : list)
+      moved[static_cast<std::size_t>(c)] = 1;
+  const GridSpec& grid = results.band.grid();
+  for (std::size_t i = 0; i < output.size(); ++i) {
+    PointOutT& p = output[i];
+    const auto index = static_cast<std::size_t>((*indices_)[i]);
+    CellId cell = kNoCell;
+    if (pcl::isXYZFinite((*input_)[index]))
+      cell = fake_surface_
+               ? results.band.pointCell()[index]
+               : results.band.find(grid.cellOf(Eigen::Vector3d(p.x, p.y, p.z)));
+    std::uint32_t label = p.label == 0 ? 0 : renumbered[p.label];
+    if (cell != kNoCell && moved[static_cast<std::size_t>(cell)] &&
+        p.feature_class == static_cast<std::uint8_t>(FeatureClass::kFace))
+      label = cell_labels[static_cast<std::size_t>(cell)];
+    if (label == 0 && cell != kNoCell)
+      label = cell_labels[static_cast<std::size_t>(cell)];
+    p.label = label;
+    p.feature_class = static_cast<std::uint8_t>(
+      label == 0 ? FeatureClass::kNone : regions[label - 1].feature_class);
+  }
+  buildGraph(results, run, output);
+  for (std::uint32_t old = 1; old < renumbered.size(); ++old)
+    if (renumbered[old] != 0 && std::isfinite(angle_of[old]) &&
+        results.graph.node(renumbered[old]).feature_class == FeatureClass::kEdge)
+      results.graph.setCreaseAngle(renumbered[old], angle_of[old]);
+  for (std::size_t k = 0; k < creases.size(); ++k) {
+    const std::uint32_t label =
+      cell_labels[static_cast<std::size_t>(creases[k].cells.front())];
+    if (label != 0 && results.graph.node(label).feature_class == FeatureClass::kEdge)
+      results.graph.setCreaseAngle(label, creases[k].degrees);
+  }
+}
+
+} // namespace visfeat
