@@ -45,17 +45,16 @@ constexpr double kContactCreaseHalfWidth = 1.0;
  * One sample per cell of a face that is a 6-neighbour of another face, the pair not in
  * `excluded`, farther than CreaseAngleParameters::kContactClearanceCells from every
  * edge and vertex point (near them the watershed spills across creases that have
- * their edge; so a crease stops a few cells short of the edges it meets): the points of each face within window_cells are fitted by a plane (least
- * squares; at least CreaseAngleParameters::kMinSidePoints a side), and where the sides
- * turn by at least min_crease_angle degrees (detail: the turn of measureCreaseAngles),
- * the cells of the two faces within the window whose centres lie within
- * half_width_cells of the line where the planes cross are the crease's. A pair is a
- * crease when at least CreaseAngleParameters::kMinContactSamples samples turned (a
- * contact of a few cells near a corner is none); its turn is their median.
- * Deterministic; pairs in ascending order.
- * \param[in] band the voxel band
- * \param[in] cell_labels per band cell, its region label (0 = none)
- * \param[in] points the labelled points (world units)
+ * their edge; so a crease stops a few cells short of the edges it meets): the points of
+ * each face within window_cells are fitted by a plane (least squares; at least
+ * CreaseAngleParameters::kMinSidePoints a side), and where the sides turn by at least
+ * min_crease_angle degrees (detail: the turn of measureCreaseAngles), the cells of the
+ * two faces within the window whose centres lie within half_width_cells of the line
+ * where the planes cross are the crease's. A pair is a crease when at least
+ * CreaseAngleParameters::kMinContactSamples samples turned (a contact of a few cells
+ * near a corner is none); its turn is their median. Deterministic; pairs in ascending
+ * order. \param[in] band the voxel band \param[in] cell_labels per band cell, its
+ * region label (0 = none) \param[in] points the labelled points (world units)
  * \param[in] labels per point, its region label (1..N, 0 = none)
  * \param[in] classes per region, its class (classes[label - 1])
  * \param[in] excluded face pairs (smaller label first) to leave alone, e.g. those an
