@@ -99,7 +99,7 @@ TEST(ContactCreases, ARightAngleCreaseIsFoundOnTheCreaseNotOnTheBoundary)
   // spilled onto) but well above the minimum crease angle
   EXPECT_GT(creases[0].degrees, 45.0);
   EXPECT_LE(creases[0].degrees, 90.5);
-  EXPECT_GE(creases[0].samples, 8u);
+  EXPECT_GE(creases[0].samples, visfeat::kMinContactCreaseSamples);
   // every cell within 1.5 cells of the crease (the boundary is 1.5 up B), and the
   // crease covered along its length (rows y = 4..35, away from the sheet's ends)
   std::vector<char> row(48, 0);

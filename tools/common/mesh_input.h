@@ -46,7 +46,6 @@ std::string stlProblem(const std::string& path);
  * cloud reader reports what is wrong with it. */
 bool isMeshFile(const std::string& path);
 
-
 /** \brief A pcl::PolygonMesh as a visfeat::SurfaceMesh: vertex coordinates whatever
  * their numeric type, polygons fanned from their first vertex. False + `error` (without
  * the file name) for vertices without x y z, truncated vertex data, a polygon of fewer

@@ -135,7 +135,7 @@ locateContactCreases(const VoxelBand& band,
     }
   }
   for (auto& [pair, crease] : placed) {
-    if (crease.turns.size() < CreaseAngleParameters::kMinContactSamples)
+    if (crease.turns.size() < kMinContactCreaseSamples)
       continue; // a few cells near a corner are no crease
     ContactCrease result;
     result.faces = pair;
