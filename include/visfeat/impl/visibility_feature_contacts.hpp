@@ -59,12 +59,11 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::addContactCreases(
   const std::vector<std::uint32_t>& cell_labels = results.segmentation.cellLabels();
   const std::vector<Region>& regions = results.segmentation.regions();
 
-  // Points: those of a moved cell take its new region, the others their region's new
-  // label (a point keeps the label the skeleton gave it).
-  std::vector<char> moved(results.band.size(), 0);
-  for (const std::vector<CellId>& list : cells)
-    for (const CellId c : list)
-      moved[static_cast<std::size_t>(c)] = 1;
+  // Points: face points of a cell now in a new region take it, the others their
+  // region's new label (a point keeps the label the skeleton gave it).
+  std::vector<char> fresh(regions.size() + 1, 1); // labels of the new regions
+  for (const std::uint32_t label : renumbered)
+    fresh[label] = 0;
   const GridSpec& grid = results.band.grid();
   for (std::size_t i = 0; i < output.size(); ++i) {
     PointOutT& p = output[i];
@@ -75,7 +74,7 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::addContactCreases(
                ? results.band.pointCell()[index]
                : results.band.find(grid.cellOf(Eigen::Vector3d(p.x, p.y, p.z)));
     std::uint32_t label = p.label == 0 ? 0 : renumbered[p.label];
-    if (cell != kNoCell && moved[static_cast<std::size_t>(cell)] &&
+    if (cell != kNoCell && fresh[cell_labels[static_cast<std::size_t>(cell)]] &&
         p.feature_class == static_cast<std::uint8_t>(FeatureClass::kFace))
       label = cell_labels[static_cast<std::size_t>(cell)];
     if (label == 0 && cell != kNoCell)

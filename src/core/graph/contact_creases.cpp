@@ -16,11 +16,13 @@ using detail::PlaneSums;
 
 namespace {
 
-/** The line where two fitted planes cross, relative to the sample point. */
+/** The line where two fitted planes cross, relative to the sample point, and the turn
+ * between them. */
 struct CreaseLine
 {
   Eigen::Vector3d point = Eigen::Vector3d::Zero();
   Eigen::Vector3d direction = Eigen::Vector3d::Zero();
+  double turn = 0.0; // degrees, detail::turnOfSides()
 
   double distance(const Eigen::Vector3d& q) const
   {
@@ -48,6 +50,7 @@ creaseLine(const PlaneSums& a, const PlaneSums& b, double min_sine, CreaseLine& 
   const double cosine = na.dot(nb), ca = na.dot(a.mean()), cb = nb.dot(b.mean());
   const double det = sine * sine; // 1 - cosine^2
   line.point = ((ca - cosine * cb) / det) * na + ((cb - cosine * ca) / det) * nb;
+  line.turn = detail::turnOfSides(a, b, na, nb);
   return true;
 }
 
@@ -115,11 +118,10 @@ locateContactCreases(const VoxelBand& band,
       CreaseLine line;
       if (!creaseLine(side_a, side_b, min_sine, line))
         break;
-      const double turn = detail::turnOfSides(side_a, side_b);
-      if (!(turn >= min_crease_angle))
+      if (!(line.turn >= min_crease_angle))
         break;
       Placed& crease = placed[pair];
-      crease.turns.push_back(turn);
+      crease.turns.push_back(line.turn);
       for (int dz = -reach; dz <= reach; ++dz)
         for (int dy = -reach; dy <= reach; ++dy)
           for (int dx = -reach; dx <= reach; ++dx) {

@@ -48,14 +48,16 @@ struct PlaneSums
   }
 };
 
-/** The turn between two sides, degrees (sideTurnDegrees()); their sums are relative to
- * the sample point. */
+/** The turn between two sides, degrees (sideTurnDegrees()), with their normals
+ * (a.normal(), b.normal()); their sums are relative to the sample point. */
 inline double
-turnOfSides(const PlaneSums& a, const PlaneSums& b)
+turnOfSides(const PlaneSums& a,
+            const PlaneSums& b,
+            const Eigen::Vector3d& na,
+            const Eigen::Vector3d& nb)
 {
   if (a.count < 3 || b.count < 3)
     return std::numeric_limits<double>::quiet_NaN();
-  const Eigen::Vector3d na = a.normal(), nb = b.normal();
   Eigen::Vector3d ua = a.mean(), ub = b.mean(); // the sample point is the origin
   ua -= ua.dot(na) * na;
   ub -= ub.dot(nb) * nb;
@@ -76,6 +78,16 @@ turnOfSides(const PlaneSums& a, const PlaneSums& b)
     return std::numeric_limits<double>::quiet_NaN();
   const double cosine = std::clamp(ua.dot(ub) / (la * lb), -1.0, 1.0);
   return 180.0 - std::acos(cosine) * 180.0 / detail::kPi;
+}
+
+/** The turn between two sides, degrees (sideTurnDegrees()); their sums are relative to
+ * the sample point. */
+inline double
+turnOfSides(const PlaneSums& a, const PlaneSums& b)
+{
+  if (a.count < 3 || b.count < 3)
+    return std::numeric_limits<double>::quiet_NaN();
+  return turnOfSides(a, b, a.normal(), b.normal());
 }
 
 /** The unit direction from b's centroid to a's, in the plane fitted to both (sums

@@ -54,6 +54,22 @@ numberRegions(std::vector<std::uint32_t>& labels,
   return regions;
 }
 
+/** numberRegions() on labels, and per label before (index < classes.size()) its label
+ * after; 0 for a label no cell holds. */
+std::vector<std::uint32_t>
+renumberRegions(std::vector<std::uint32_t>& labels,
+                const std::vector<FeatureClass>& classes,
+                const std::vector<std::uint32_t>& core_of,
+                std::vector<Region>& regions)
+{
+  const std::vector<std::uint32_t> before = labels;
+  regions = numberRegions(labels, classes, core_of);
+  std::vector<std::uint32_t> after(classes.size(), 0);
+  for (std::size_t c = 0; c < labels.size(); ++c)
+    after[before[c]] = labels[c];
+  return after;
+}
+
 } // namespace
 
 void
@@ -130,7 +146,6 @@ FeatureSegmentation::mergeRegions(const std::vector<std::uint32_t>& into)
                   std::to_string(into[l]) + ", not a kept region");
     classes[l] = regions_[into[l] - 1].feature_class;
   }
-  std::vector<std::uint32_t> renumbered(n + 1, 0);
   for (std::size_t c = 0; c < labels_.size(); ++c) {
     std::uint32_t& label = labels_[c];
     if (label == 0)
@@ -143,12 +158,11 @@ FeatureSegmentation::mergeRegions(const std::vector<std::uint32_t>& into)
       skeleton_tangents_[c] = Eigen::Vector3f::Zero();
     }
   }
-  const std::vector<std::uint32_t> old_labels = labels_;
-  regions_ = numberRegions(labels_, classes, cores_.cellLabels());
-  for (std::size_t c = 0; c < labels_.size(); ++c)
-    renumbered[old_labels[c]] = labels_[c];
+  const std::vector<std::uint32_t> after =
+    renumberRegions(labels_, classes, cores_.cellLabels(), regions_);
+  std::vector<std::uint32_t> renumbered(n + 1, 0);
   for (std::size_t l = 1; l <= n; ++l)
-    renumbered[l] = renumbered[into[l]];
+    renumbered[l] = after[into[l]];
   return renumbered;
 }
 
@@ -160,7 +174,6 @@ FeatureSegmentation::addEdgeRegions(const std::vector<std::vector<CellId>>& cell
   classes[0] = FeatureClass::kNone;
   for (std::size_t l = 1; l <= n; ++l)
     classes[l] = regions_[l - 1].feature_class;
-  const std::vector<std::uint32_t> old_labels = labels_;
   for (std::size_t r = 0; r < cells.size(); ++r)
     for (const CellId c : cells[r]) {
       if (c < 0 || static_cast<std::size_t>(c) >= labels_.size())
@@ -171,18 +184,10 @@ FeatureSegmentation::addEdgeRegions(const std::vector<std::vector<CellId>>& cell
       if (label != 0 && label <= n && classes[label] == FeatureClass::kFace)
         label = static_cast<std::uint32_t>(n + 1 + r);
     }
-  regions_ = numberRegions(labels_, classes, cores_.cellLabels());
-  std::vector<std::uint32_t> renumbered(n + 1, 0);
-  // an old region keeps a cell that stayed in it (cells moved to new regions do not
-  // tell): its new label is the label of any such cell
-  std::vector<char> moved(labels_.size(), 0);
-  for (const std::vector<CellId>& list : cells)
-    for (const CellId c : list)
-      moved[static_cast<std::size_t>(c)] = 1;
-  for (std::size_t c = 0; c < labels_.size(); ++c)
-    if (old_labels[c] != 0 &&
-        (!moved[c] || classes[old_labels[c]] != FeatureClass::kFace))
-      renumbered[old_labels[c]] = labels_[c];
+  // an old region whose cells all moved holds no cell any more: 0
+  std::vector<std::uint32_t> renumbered =
+    renumberRegions(labels_, classes, cores_.cellLabels(), regions_);
+  renumbered.resize(n + 1);
   return renumbered;
 }
 
