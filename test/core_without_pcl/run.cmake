@@ -2,7 +2,9 @@
 #   cmake -DSOURCE_DIR=<visfeat checkout> -DWORK_DIR=<scratch build dir>
 #         [-DCXX_COMPILER=...] [-DLAUNCHER=ccache] [-DGENERATOR=...] -P run.cmake
 # (a) greps the core folders for a PCL include, (b) configures and builds
-# test/core_without_pcl, a project that never finds PCL. Either failing fails the test.
+# test/core_without_pcl, a project that never finds PCL, which compiles every core
+# header (the core sources are compiled without PCL on their include path by the main
+# build's visfeat_core target). Either failing fails the test.
 cmake_minimum_required(VERSION 3.16)
 
 foreach(var SOURCE_DIR WORK_DIR)
