@@ -8,8 +8,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
+#include <random>
 #include <vector>
 
 namespace {
@@ -148,6 +150,141 @@ TEST(PointLabeling, OnlyCellsWithin2CellsOfTheSkeletonAreExamined)
   // Far cells keep their label whatever the point.
   expectLabel(layer.at(l, 5.5, 9.5), kFaceB, FeatureClass::kFace);
   expectLabel(layer.at(l, 5.5, 0.1), kFaceA, FeatureClass::kFace);
+}
+
+/** The rule of PointLabeling's docstring as written there: a scan of the block of
+ * (2 reach + 1)^3 cells around the point's cell, in z, y, x order, for every point. */
+PointLabel
+scanReference(const VoxelBand& band,
+              const std::vector<std::uint32_t>& labels,
+              const std::vector<FeatureClass>& classes,
+              const std::vector<char>& skeleton,
+              const std::vector<Eigen::Vector3f>& centres,
+              const std::vector<Eigen::Vector3f>& tangents,
+              double distance,
+              int reach,
+              const Eigen::Vector3d& q,
+              CellId cell)
+{
+  const auto cls = [&](CellId n) {
+    const std::uint32_t l = labels[static_cast<std::size_t>(n)];
+    return l == 0 ? FeatureClass::kNone : classes[l - 1];
+  };
+  PointLabel result{labels[static_cast<std::size_t>(cell)], cls(cell)};
+  const CellCoord c = band.coord(cell);
+  double near_skeleton = std::numeric_limits<double>::infinity(),
+         near_vertex = near_skeleton, near_face = near_skeleton;
+  CellId nearest_skeleton = visfeat::kNoCell, nearest_vertex = visfeat::kNoCell;
+  std::uint32_t face = 0;
+  bool any_skeleton = false;
+  for (int dz = -reach; dz <= reach; ++dz)
+    for (int dy = -reach; dy <= reach; ++dy)
+      for (int dx = -reach; dx <= reach; ++dx) {
+        const CellId n = band.find(c + CellCoord(dx, dy, dz));
+        if (n == visfeat::kNoCell)
+          continue;
+        const auto s = static_cast<std::size_t>(n);
+        if (skeleton[s]) {
+          any_skeleton = true;
+          const Eigen::Vector3d d = q - centres[s].cast<double>();
+          const Eigen::Vector3d u = tangents[s].cast<double>();
+          const double along =
+            std::clamp(d.dot(u), -PointLabeling::kHalfPiece, PointLabeling::kHalfPiece);
+          const double dist = (d - along * u).norm();
+          if (dist < near_skeleton) {
+            near_skeleton = dist;
+            nearest_skeleton = n;
+          }
+          if (dist < near_vertex && cls(n) == FeatureClass::kVertex) {
+            near_vertex = dist;
+            nearest_vertex = n;
+          }
+        }
+        if (std::abs(dx) <= 1 && std::abs(dy) <= 1 && std::abs(dz) <= 1 &&
+            cls(n) == FeatureClass::kFace) {
+          const double d =
+            (band.coord(n).cast<double>() + Eigen::Vector3d::Constant(0.5) - q).norm();
+          if (d < near_face) {
+            near_face = d;
+            face = labels[s];
+          }
+        }
+      }
+  if (!any_skeleton)
+    return result;
+  if (near_vertex <= distance)
+    nearest_skeleton = nearest_vertex;
+  if (near_skeleton <= distance)
+    return {labels[static_cast<std::size_t>(nearest_skeleton)], cls(nearest_skeleton)};
+  if ((result.feature_class == FeatureClass::kEdge ||
+       result.feature_class == FeatureClass::kVertex) &&
+      face != 0)
+    return {face, FeatureClass::kFace};
+  return result;
+}
+
+TEST(PointLabeling, TheListedSkeletonGivesTheLabelsOfAScanOfTheBlock)
+{
+  // A random band (a thick shell of a sphere, cells kept at random), random labels,
+  // skeleton, centres on a coarse lattice (so that exact ties between skeleton cells
+  // happen) and tangents: the lists built once must give every point the label the
+  // docstring's scan gives it, ties included.
+  std::mt19937 random(20261202);
+  visfeat::GridSpec grid;
+  grid.dims = Eigen::Vector3i(24, 24, 24);
+  std::vector<CellCoord> cells;
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (int z = 0; z < 24; ++z)
+    for (int y = 0; y < 24; ++y)
+      for (int x = 0; x < 24; ++x) {
+        const double r = Eigen::Vector3d(x - 11.5, y - 11.5, z - 11.5).norm();
+        if (r > 7.0 && r < 10.0 && unit(random) < 0.7)
+          cells.emplace_back(x, y, z);
+      }
+  VoxelBand::Options no_repair;
+  no_repair.repair = false;
+  const VoxelBand band = VoxelBand::fromCells(grid, cells, no_repair);
+  const std::size_t n = band.size();
+  const std::vector<FeatureClass> classes{FeatureClass::kFace, FeatureClass::kEdge,
+                                          FeatureClass::kVertex, FeatureClass::kFace};
+  std::vector<std::uint32_t> labels(n);
+  std::vector<char> skeleton(n, 0);
+  std::vector<Eigen::Vector3f> centres(n, Eigen::Vector3f::Zero());
+  std::vector<Eigen::Vector3f> tangents(n, Eigen::Vector3f::Zero());
+  std::uniform_int_distribution<std::uint32_t> label(0, 4);
+  for (std::size_t c = 0; c < n; ++c) {
+    labels[c] = label(random);
+    if (unit(random) < 0.15) {
+      skeleton[c] = 1;
+      const CellCoord at = band.coord(static_cast<CellId>(c));
+      centres[c] = at.cast<float>() + Eigen::Vector3f::Constant(0.5f);
+      if (unit(random) < 0.5)
+        tangents[c] = Eigen::Vector3f::Unit(static_cast<Eigen::Index>(c % 3));
+    }
+  }
+  std::size_t changed = 0, checked = 0;
+  for (const double distance : {0.8, 1.5, 3.2}) {
+    const PointLabeling l(band, labels, classes, skeleton, centres, tangents, distance);
+    for (std::size_t c = 0; c < n; ++c)
+      for (int k = 0; k < 3; ++k) {
+        const CellCoord at = band.coord(static_cast<CellId>(c));
+        // points on a half-cell lattice (ties) and at random
+        const Eigen::Vector3d offset =
+          k == 0 ? Eigen::Vector3d::Constant(0.5)
+                 : Eigen::Vector3d(unit(random), unit(random), unit(random));
+        const Eigen::Vector3d q = at.cast<double>() + offset;
+        const PointLabel got = l.labelOf(q, static_cast<CellId>(c));
+        const PointLabel want =
+          scanReference(band, labels, classes, skeleton, centres, tangents, distance,
+                        l.reach(), q, static_cast<CellId>(c));
+        ASSERT_EQ(got.label, want.label) << "cell " << c << " d " << distance;
+        ASSERT_EQ(got.feature_class, want.feature_class);
+        ++checked;
+        changed += got.label != labels[c];
+      }
+  }
+  EXPECT_GT(checked, 10000u);
+  EXPECT_GT(changed, checked / 10); // the rule moved many points: the test has teeth
 }
 
 TEST(PointLabeling, OffOrWithoutSkeletonPointsTakeTheirCellsLabel)

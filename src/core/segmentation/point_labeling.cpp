@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include <utility>
 
 namespace visfeat {
 
@@ -53,20 +54,62 @@ PointLabeling::PointLabeling(const VoxelBand& band,
   if (distance_ <= 0.0 || skeleton_.empty())
     return;
   reach_ = std::max(kSkeletonReach, static_cast<int>(std::ceil(distance_)));
-  // Only points of cells within kSkeletonReach of a skeleton cell can change label.
-  near_skeleton_.assign(skeleton_.size(), 0);
-  for (std::size_t c = 0; c < skeleton_.size(); ++c) {
+  listSkeletonAround();
+}
+
+void
+PointLabeling::listSkeletonAround()
+{
+  // Scatter: every skeleton cell s, in increasing id, adds itself to the list of each
+  // band cell n within reach_. Band ids increase with GridSpec::linearKey, that is in
+  // z, y, x order, so each list comes out in the scan order around its cell.
+  std::vector<std::pair<CellId, CellId>> pairs; // (n, s)
+  const std::size_t n_cells = skeleton_.size();
+  for (std::size_t c = 0; c < n_cells; ++c) {
     if (!skeleton_[c])
       continue;
-    const CellCoord at = band.coord(static_cast<CellId>(c));
+    const CellCoord at = band_.coord(static_cast<CellId>(c));
     for (int dz = -reach_; dz <= reach_; ++dz)
       for (int dy = -reach_; dy <= reach_; ++dy)
         for (int dx = -reach_; dx <= reach_; ++dx) {
-          const CellId n = band.find(at + CellCoord(dx, dy, dz));
+          const CellId n = band_.find(at + CellCoord(dx, dy, dz));
           if (n != kNoCell)
-            near_skeleton_[static_cast<std::size_t>(n)] = 1;
+            pairs.emplace_back(n, static_cast<CellId>(c));
         }
   }
+  around_begin_.assign(n_cells + 1, 0);
+  for (const auto& p : pairs)
+    ++around_begin_[static_cast<std::size_t>(p.first) + 1];
+  for (std::size_t c = 0; c < n_cells; ++c)
+    around_begin_[c + 1] += around_begin_[c];
+  around_.resize(pairs.size());
+  std::vector<std::uint32_t> next(around_begin_.begin(), around_begin_.end() - 1);
+  for (const auto& p : pairs)
+    around_[next[static_cast<std::size_t>(p.first)]++] = p.second;
+  near_skeleton_.assign(n_cells, 0);
+  for (std::size_t c = 0; c < n_cells; ++c)
+    near_skeleton_[c] = around_begin_[c + 1] > around_begin_[c] ? 1 : 0;
+}
+
+std::uint32_t
+PointLabeling::nearestFace(const Eigen::Vector3d& q, const CellCoord& c) const
+{
+  double near_face = std::numeric_limits<double>::infinity();
+  std::uint32_t face = 0;
+  for (int dz = -kFaceReach; dz <= kFaceReach; ++dz)
+    for (int dy = -kFaceReach; dy <= kFaceReach; ++dy)
+      for (int dx = -kFaceReach; dx <= kFaceReach; ++dx) {
+        const CellId n = band_.find(c + CellCoord(dx, dy, dz));
+        if (n == kNoCell || cellClass(n) != FeatureClass::kFace)
+          continue;
+        const double d =
+          (band_.coord(n).cast<double>() + Eigen::Vector3d::Constant(0.5) - q).norm();
+        if (d < near_face) {
+          near_face = d;
+          face = labels_[static_cast<std::size_t>(n)];
+        }
+      }
+  return face;
 }
 
 PointLabel
@@ -80,55 +123,40 @@ PointLabeling::labelOf(const Eigen::Vector3d& q, CellId cell) const
   if (near_skeleton_.empty() || !near_skeleton_[static_cast<std::size_t>(cell)])
     return result;
 
-  const CellCoord c = band_.coord(cell);
   double near_skeleton = std::numeric_limits<double>::infinity();
   CellId nearest_skeleton = kNoCell;
   double near_vertex = std::numeric_limits<double>::infinity();
   CellId nearest_vertex = kNoCell;
-  double near_face = std::numeric_limits<double>::infinity();
-  std::uint32_t face = 0;
-  for (int dz = -reach_; dz <= reach_; ++dz)
-    for (int dy = -reach_; dy <= reach_; ++dy)
-      for (int dx = -reach_; dx <= reach_; ++dx) {
-        const CellId n = band_.find(c + CellCoord(dx, dy, dz));
-        if (n == kNoCell)
-          continue;
-        const auto s = static_cast<std::size_t>(n);
-        if (skeleton_[s]) {
-          // Distance to the piece of middle line the skeleton cell stands for.
-          const Eigen::Vector3d d = q - centres_[s].cast<double>();
-          const Eigen::Vector3d u = tangents_[s].cast<double>();
-          const double along = std::clamp(d.dot(u), -kHalfPiece, kHalfPiece);
-          const double distance = (d - along * u).norm();
-          if (distance < near_skeleton) {
-            near_skeleton = distance;
-            nearest_skeleton = n;
-          }
-          if (distance < near_vertex && cellClass(n) == FeatureClass::kVertex) {
-            near_vertex = distance;
-            nearest_vertex = n;
-          }
-        }
-        if (std::abs(dx) <= kFaceReach && std::abs(dy) <= kFaceReach &&
-            std::abs(dz) <= kFaceReach && cellClass(n) == FeatureClass::kFace) {
-          const double d =
-            (band_.coord(n).cast<double>() + Eigen::Vector3d::Constant(0.5) - q).norm();
-          if (d < near_face) {
-            near_face = d;
-            face = labels_[s];
-          }
-        }
-      }
+  const auto [first, last] = skeletonAround(cell);
+  for (const CellId* it = first; it != last; ++it) {
+    const CellId n = *it;
+    const auto s = static_cast<std::size_t>(n);
+    // Distance to the piece of middle line the skeleton cell stands for.
+    const Eigen::Vector3d d = q - centres_[s].cast<double>();
+    const Eigen::Vector3d u = tangents_[s].cast<double>();
+    const double along = std::clamp(d.dot(u), -kHalfPiece, kHalfPiece);
+    const double distance = (d - along * u).norm();
+    if (distance < near_skeleton) {
+      near_skeleton = distance;
+      nearest_skeleton = n;
+    }
+    if (distance < near_vertex && cellClass(n) == FeatureClass::kVertex) {
+      near_vertex = distance;
+      nearest_vertex = n;
+    }
+  }
   if (near_vertex <= distance_)
     nearest_skeleton = nearest_vertex;
   if (near_skeleton <= distance_) {
     result.label = labels_[static_cast<std::size_t>(nearest_skeleton)];
     result.feature_class = cellClass(nearest_skeleton);
-  } else if ((result.feature_class == FeatureClass::kEdge ||
-              result.feature_class == FeatureClass::kVertex) &&
-             face != 0) {
-    result.label = face;
-    result.feature_class = FeatureClass::kFace;
+  } else if (result.feature_class == FeatureClass::kEdge ||
+             result.feature_class == FeatureClass::kVertex) {
+    const std::uint32_t face = nearestFace(q, band_.coord(cell));
+    if (face != 0) {
+      result.label = face;
+      result.feature_class = FeatureClass::kFace;
+    }
   }
   return result;
 }

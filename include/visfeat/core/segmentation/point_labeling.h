@@ -8,6 +8,7 @@
 #include <Eigen/Core>
 
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace visfeat {
@@ -42,6 +43,11 @@ struct PointLabel
  *     neighbours and itself); with no face cell there it keeps its cell's label.
  * Ties keep the first cell in z, y, x scan order (dz, dy, dx from -reach to reach).
  * With d = 0 or without a skeleton, every point takes its cell's label and class.
+ *
+ * The skeleton cells within reach() of each band cell are listed once, at
+ * construction (in that scan order), so a point reads its cell's list instead of
+ * looking up the (2 reach() + 1)^3 cells around it; the 3x3x3 face search of step 4
+ * runs only for the points that reach it.
  *
  * The object keeps references to the band and the segmentation (or the arrays): they
  * must outlive it.
@@ -102,12 +108,28 @@ public:
    * when point_feature_distance is 0 or there is no skeleton). */
   const std::vector<char>& nearSkeleton() const { return near_skeleton_; }
 
+  /** \brief The skeleton cells within reach() of band cell `cell` (Chebyshev), in
+   * z, y, x scan order around it; empty where nearSkeleton() is 0 or empty. */
+  std::pair<const CellId*, const CellId*> skeletonAround(CellId cell) const
+  {
+    if (around_begin_.empty())
+      return {nullptr, nullptr};
+    const auto c = static_cast<std::size_t>(cell);
+    return {around_.data() + around_begin_[c], around_.data() + around_begin_[c + 1]};
+  }
+
 private:
   FeatureClass cellClass(CellId cell) const
   {
     const std::uint32_t label = labels_[static_cast<std::size_t>(cell)];
     return label == 0 ? FeatureClass::kNone : classes_[label - 1];
   }
+
+  /** Lists the skeleton cells around every band cell (around_begin_, around_). */
+  void listSkeletonAround();
+
+  /** Step 4: the face cell nearest to q among the 3x3x3 block around c; 0 if none. */
+  std::uint32_t nearestFace(const Eigen::Vector3d& q, const CellCoord& c) const;
 
   const VoxelBand& band_;
   int reach_ = kSkeletonReach;
@@ -118,6 +140,9 @@ private:
   const std::vector<Eigen::Vector3f>& tangents_;
   double distance_;
   std::vector<char> near_skeleton_;
+  /** around_[around_begin_[c], around_begin_[c + 1]): skeletonAround(c). */
+  std::vector<std::uint32_t> around_begin_;
+  std::vector<CellId> around_;
 };
 
 /** \brief Node geometry of the topology graph from labelled points: per region, the
