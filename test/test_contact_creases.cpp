@@ -35,17 +35,17 @@ struct Crease
 };
 
 Crease
-creaseOfTwoPlanes(double turn)
+creaseOfTwoPlanes(double turn, double length = 40.0)
 {
   Crease c;
   visfeat::GridSpec grid;
-  grid.dims = CellCoord(64, 48, 64);
+  grid.dims = CellCoord(64, static_cast<int>(length) + 8, 64);
   grid.cell_size = 1.0;
   grid.origin = Eigen::Vector3d(-32.5, -4.0, -32.5); // x = 0, z = 0: cell centres
   const double t = turn * kPi / 180.0;
   const Eigen::Vector3d up(-std::cos(t), 0.0, std::sin(t)); // B's direction away
   std::vector<CellCoord> cells;
-  for (double y = 0.125; y < 40.0; y += 0.25)
+  for (double y = 0.125; y < length; y += 0.25)
     for (double s = 0.125; s < 20.0; s += 0.25) {
       c.points.emplace_back(-s, y, 0.0); // A
       c.labels.push_back(1);
@@ -74,10 +74,12 @@ creaseOfTwoPlanes(double turn)
 }
 
 std::vector<ContactCrease>
-locate(const Crease& c, const std::set<std::array<std::uint32_t, 2>>& excluded = {})
+locate(const Crease& c,
+       const std::set<std::array<std::uint32_t, 2>>& excluded = {},
+       int threads = 1)
 {
   return visfeat::locateContactCreases(c.band, c.cell_labels, c.points, c.labels,
-                                       c.classes, excluded, 4.0, 20.0, 1.0);
+                                       c.classes, excluded, 4.0, 20.0, 1.0, threads);
 }
 
 /** Distance of a cell centre from the true crease (the y axis). */
@@ -126,3 +128,19 @@ TEST(ContactCreases, PairsAnEdgeSeparatesAreLeftAlone)
 }
 
 } // namespace
+
+TEST(ContactCreases, TheSameForAnyThreadCount)
+{
+  const Crease c = creaseOfTwoPlanes(90.0, 200.0); // 9,000 cells: three chunks
+  ASSERT_GT(c.band.size(), 8192u);
+  const std::vector<ContactCrease> one = locate(c, {}, 1);
+  ASSERT_EQ(one.size(), 1u);
+  for (const int threads : {2, 0}) {
+    const std::vector<ContactCrease> other = locate(c, {}, threads);
+    ASSERT_EQ(other.size(), 1u);
+    EXPECT_EQ(other[0].faces, one[0].faces);
+    EXPECT_EQ(other[0].degrees, one[0].degrees);
+    EXPECT_EQ(other[0].samples, one[0].samples);
+    EXPECT_EQ(other[0].cells, one[0].cells);
+  }
+}

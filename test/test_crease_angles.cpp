@@ -110,6 +110,44 @@ TEST(CreaseAngles, MeasuredOnLabelledCloudsAtKnownTurns)
   }
 }
 
+TEST(CreaseAngles, TheSameForAnyThreadCount)
+{
+  // Six creases far apart (labels 3 k + 1, 3 k + 2, 3 k + 3), noisy.
+  LabelledCloud all;
+  std::vector<FeatureClass> classes;
+  const double turns[] = {15.0, 30.0, 60.0, 90.0, 100.0, 135.0};
+  for (std::uint32_t k = 0; k < 6; ++k) {
+    const LabelledCloud one = twoPlanes(turns[k], syn::randomRotation(40 + k), 0.2, k);
+    for (std::size_t i = 0; i < one.points.size(); ++i) {
+      all.points.push_back(one.points[i] + Eigen::Vector3d(200.0 * kCell * k, 0, 0));
+      all.labels.push_back(one.labels[i] + 3 * k);
+    }
+    classes.insert(classes.end(), kFaceEdgeFace.begin(), kFaceEdgeFace.end());
+  }
+  const auto measure = [&](int threads) {
+    return visfeat::measureCreaseAngles(
+      all.points, all.labels, classes, kCell,
+      visfeat::CreaseAngleParameters::kDefaultWindowCells, 180.0, threads);
+  };
+  const std::vector<CreaseAngle> one = measure(1), two = measure(2),
+                                 all_threads = measure(0);
+  ASSERT_EQ(one.size(), 18u);
+  for (std::size_t r = 0; r < one.size(); ++r) {
+    for (const std::vector<CreaseAngle>* other : {&two, &all_threads}) {
+      const CreaseAngle& b = (*other)[r];
+      EXPECT_EQ(std::isnan(one[r].degrees), std::isnan(b.degrees)) << r;
+      if (!std::isnan(one[r].degrees)) {
+        EXPECT_EQ(one[r].degrees, b.degrees) << r;
+      }
+      EXPECT_EQ(one[r].faces, b.faces) << r;
+      EXPECT_EQ(one[r].samples, b.samples) << r;
+    }
+    if (r % 3 == 1) {
+      EXPECT_NEAR(one[r].degrees, turns[r / 3], kNoisyTolerance) << r;
+    }
+  }
+}
+
 /** Two perpendicular planes joined by a quarter cylinder of radius r cells, sampled
  * densely; the edge is the points within 1 cell (of arc) of the fillet's middle. */
 LabelledCloud

@@ -227,6 +227,58 @@ covered(const Eigen::Vector3d& q,
   return false;
 }
 
+TEST(PointsOnCells, EachPointJoinsItsCellOrTheNearestAndThreadsChangeNothing)
+{
+  // The cells of the plane z = 0.5 (cells of 0.1, z index 15) between x, y in [0, 1);
+  // points on it, points a rounding off it, points far from it and a NaN.
+  visfeat::GridSpec grid;
+  grid.origin = Eigen::Vector3d(-1, -1, -1);
+  grid.cell_size = 0.1;
+  grid.dims = Eigen::Vector3i(30, 30, 30);
+  std::vector<CellCoord> cells;
+  for (int y = 10; y < 20; ++y)
+    for (int x = 10; x < 20; ++x)
+      cells.emplace_back(x, y, 15);
+  pcl::PointCloud<pcl::PointXYZ> cloud;
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<float> at(0.0f, 0.999f), off(-0.02f, 0.02f);
+  for (int i = 0; i < 50000; ++i) {
+    const int kind = i % 10;
+    const float z = kind == 0 ? -0.3f : kind == 1 ? 0.5f + off(rng) : 0.55f;
+    cloud.push_back(pcl::PointXYZ(at(rng), at(rng), z));
+  }
+  cloud.push_back(pcl::PointXYZ(std::nanf(""), 0.0f, 0.0f));
+  std::vector<visfeat::OccupiedCell> one, two;
+  std::vector<std::int32_t> of_one, of_two;
+  visfeat::pointsOnCells(cloud, grid, cells, one, of_one, 1);
+  visfeat::pointsOnCells(cloud, grid, cells, two, of_two, 2);
+  ASSERT_EQ(of_one, of_two);
+  ASSERT_EQ(one.size(), two.size());
+  for (std::size_t e = 0; e < one.size(); ++e) {
+    EXPECT_EQ(one[e].coord, two[e].coord);
+    EXPECT_EQ(one[e].offset_sum, two[e].offset_sum);
+    EXPECT_EQ(one[e].point_count, two[e].point_count);
+  }
+  EXPECT_EQ(one.size(), cells.size());
+  std::size_t counted = 0;
+  for (std::size_t i = 0; i < cloud.size(); ++i) {
+    const pcl::PointXYZ& p = cloud[i];
+    if (!std::isfinite(p.x) || p.z < 0.0f) { // NaN, or 0.8 from the plane: none
+      EXPECT_EQ(of_one[i], -1) << i;
+      continue;
+    }
+    ASSERT_GE(of_one[i], 0) << i;
+    ++counted;
+    const CellCoord c = one[static_cast<std::size_t>(of_one[i])].coord;
+    // its own column of the plane (a point off it by a rounding takes its neighbour)
+    EXPECT_EQ(c, CellCoord(grid.cellOf(Eigen::Vector3d(p.x, p.y, 0.55)))) << i;
+  }
+  std::size_t total = 0;
+  for (const visfeat::OccupiedCell& o : one)
+    total += o.point_count;
+  EXPECT_EQ(total, counted);
+}
+
 TEST(LocalTriangles, CoverThePlaneAndLeaveTheHoleOpen)
 {
   std::mt19937 rng(3);

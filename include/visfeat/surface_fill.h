@@ -175,14 +175,18 @@ std::vector<CellCoord> organizedCells(const pcl::PointCloud<PointT>& cloud,
  * them among its 26 neighbours (points a rounding away from a face that lies on a cell
  * boundary), else none (-1). The points then add no cell of their own to the band.
  * \param[in] cells sorted by GridSpec::linearKey, no duplicates (rasterizeTriangles())
- * \param[out] occupied one entry per cell that received points
- * \param[out] point_occupied per point, its entry in occupied, or -1 */
+ * \param[out] occupied one entry per cell that received points, in the order of their
+ *             first point
+ * \param[out] point_occupied per point, its entry in occupied, or -1
+ * \param[in] threads threads for the cell lookups (0 = all available); the result is
+ *            the same for any count */
 template <typename PointT>
 void pointsOnCells(const pcl::PointCloud<PointT>& cloud,
                    const GridSpec& grid,
                    const std::vector<CellCoord>& cells,
                    std::vector<OccupiedCell>& occupied,
-                   std::vector<std::int32_t>& point_occupied);
+                   std::vector<std::int32_t>& point_occupied,
+                   int threads = 1);
 
 } // namespace visfeat
 

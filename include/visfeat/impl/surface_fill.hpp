@@ -151,7 +151,8 @@ pointsOnCells(const pcl::PointCloud<PointT>& cloud,
               const GridSpec& grid,
               const std::vector<CellCoord>& cells,
               std::vector<OccupiedCell>& occupied,
-              std::vector<std::int32_t>& point_occupied)
+              std::vector<std::int32_t>& point_occupied,
+              int threads)
 {
   std::vector<std::uint64_t> keys(cells.size());
   for (std::size_t i = 0; i < cells.size(); ++i)
@@ -162,31 +163,43 @@ pointsOnCells(const pcl::PointCloud<PointT>& cloud,
     const auto it = std::lower_bound(keys.begin(), keys.end(), grid.linearKey(c));
     return it != keys.end() && *it == grid.linearKey(c) ? it - keys.begin() : -1;
   };
+  // Each point's cell (an index into cells, -1 none) on threads: the binary searches
+  // are the cost (about 0.3 s for a million points on 355,000 cells).
+  std::vector<std::int32_t> cell_of(cloud.size(), -1);
+  constexpr std::size_t kPointsPerChunk = 16384;
+  parallelFor(cloud.size(), threads, kPointsPerChunk,
+              [&](std::size_t begin, std::size_t end) {
+                for (std::size_t i = begin; i < end; ++i) {
+                  const PointT& p = cloud[i];
+                  if (!pcl::isXYZFinite(p))
+                    continue;
+                  const Eigen::Vector3d q(p.x, p.y, p.z);
+                  const CellCoord home = grid.cellOf(q);
+                  std::int64_t found = find(home);
+                  if (found < 0) { // the nearest cell centre among the 26 neighbours
+                    double best = std::numeric_limits<double>::infinity();
+                    for (int dz = -1; dz <= 1; ++dz)
+                      for (int dy = -1; dy <= 1; ++dy)
+                        for (int dx = -1; dx <= 1; ++dx) {
+                          const CellCoord c = home + CellCoord(dx, dy, dz);
+                          const std::int64_t at = find(c);
+                          const double d = (grid.cellCenter(c) - q).squaredNorm();
+                          if (at >= 0 && d < best) {
+                            best = d;
+                            found = at;
+                          }
+                        }
+                  }
+                  cell_of[i] = static_cast<std::int32_t>(found);
+                }
+              });
+  // The entries in the order of their first point, as one thread would make them.
   std::vector<std::int32_t> entry_of(cells.size(), -1);
   occupied.clear();
   point_occupied.assign(cloud.size(), -1);
   const double scale = OccupiedCell::kOffsetScale / grid.cell_size;
   for (std::size_t i = 0; i < cloud.size(); ++i) {
-    const PointT& p = cloud[i];
-    if (!pcl::isXYZFinite(p))
-      continue;
-    const Eigen::Vector3d q(p.x, p.y, p.z);
-    const CellCoord home = grid.cellOf(q);
-    std::int64_t found = find(home);
-    if (found < 0) { // the nearest cell centre among the 26 neighbours
-      double best = std::numeric_limits<double>::infinity();
-      for (int dz = -1; dz <= 1; ++dz)
-        for (int dy = -1; dy <= 1; ++dy)
-          for (int dx = -1; dx <= 1; ++dx) {
-            const CellCoord c = home + CellCoord(dx, dy, dz);
-            const std::int64_t at = find(c);
-            const double d = (grid.cellCenter(c) - q).squaredNorm();
-            if (at >= 0 && d < best) {
-              best = d;
-              found = at;
-            }
-          }
-    }
+    const std::int32_t found = cell_of[i];
     if (found < 0)
       continue;
     std::int32_t& entry = entry_of[static_cast<std::size_t>(found)];
@@ -197,6 +210,8 @@ pointsOnCells(const pcl::PointCloud<PointT>& cloud,
       occupied.push_back(cell);
     }
     OccupiedCell& cell = occupied[static_cast<std::size_t>(entry)];
+    const PointT& p = cloud[i];
+    const Eigen::Vector3d q(p.x, p.y, p.z);
     const Eigen::Vector3d cell_min =
       grid.origin + grid.cell_size * cell.coord.template cast<double>();
     const Eigen::Vector3d offset =
@@ -221,4 +236,4 @@ pointsOnCells(const pcl::PointCloud<PointT>& cloud,
   template void visfeat::pointsOnCells<T>(                                             \
     const pcl::PointCloud<T>&, const visfeat::GridSpec&,                               \
     const std::vector<visfeat::CellCoord>&, std::vector<visfeat::OccupiedCell>&,       \
-    std::vector<std::int32_t>&);
+    std::vector<std::int32_t>&, int);

@@ -40,9 +40,10 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::addContactCreases(
         separated.insert(
           {{std::min(faces[i], faces[j]), std::max(faces[i], faces[j])}});
   }
-  const std::vector<ContactCrease> creases = locateContactCreases(
-    results.band, results.segmentation.cellLabels(), points, labels, classes, separated,
-    run.crease_angles.window_cells, min_angle, kContactCreaseHalfWidth);
+  const std::vector<ContactCrease> creases =
+    locateContactCreases(results.band, results.segmentation.cellLabels(), points,
+                         labels, classes, separated, run.crease_angles.window_cells,
+                         min_angle, kContactCreaseHalfWidth, run.visibility.threads);
   if (creases.empty())
     return;
 

@@ -345,15 +345,16 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::mergeShallowCreases(
     points[i] = output[i].getVector3fMap().template cast<double>();
   readLabels();
   const auto measure = [&]() {
-    return measureCreaseAngles(points, labels, results.segmentation.regionClasses(),
-                               results.band.grid().cell_size,
-                               run.crease_angles.window_cells,
-                               run.crease_angles.min_crease_angle);
+    return measureCreaseAngles(
+      points, labels, results.segmentation.regionClasses(),
+      results.band.grid().cell_size, run.crease_angles.window_cells,
+      run.crease_angles.min_crease_angle, run.visibility.threads);
   };
   std::vector<CreaseAngle> angles = measure();
-  const std::vector<CreaseAngle> contacts = measureFaceContacts(
-    results.band, results.segmentation.cellLabels(), points, labels,
-    results.segmentation.regionClasses(), run.crease_angles.window_cells);
+  const std::vector<CreaseAngle> contacts =
+    measureFaceContacts(results.band, results.segmentation.cellLabels(), points, labels,
+                        results.segmentation.regionClasses(),
+                        run.crease_angles.window_cells, run.visibility.threads);
   const std::vector<std::uint32_t> into = shallowCreaseMerge(
     results.graph, angles, contacts, run.crease_angles.min_crease_angle);
   if (!applyRegionMerge(results, run, output, into).empty()) { // the new edges' angles
@@ -405,7 +406,8 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::computeResults(
     std::vector<CellCoord> cells = fillCells(run, *surface);
     std::vector<OccupiedCell> occupied;
     std::vector<std::int32_t> point_occupied;
-    pointsOnCells(*surface, run.grid, cells, occupied, point_occupied);
+    pointsOnCells(*surface, run.grid, cells, occupied, point_occupied,
+                  run.visibility.threads);
     results.band = VoxelBand::build(run.grid, std::move(occupied), point_occupied,
                                     band_options, cells);
   } else {

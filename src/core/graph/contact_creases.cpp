@@ -1,5 +1,7 @@
 #include <visfeat/core/graph/contact_creases.h>
 
+#include <visfeat/core/common/threads.h>
+
 #include "../common/angles.h"
 #include "face_point_index.h"
 #include "plane_sums.h"
@@ -65,7 +67,8 @@ locateContactCreases(const VoxelBand& band,
                      const std::set<std::array<std::uint32_t, 2>>& excluded,
                      double window_cells,
                      double min_crease_angle,
-                     double half_width_cells)
+                     double half_width_cells,
+                     int threads)
 {
   std::vector<ContactCrease> creases;
   const GridSpec& grid = band.grid();
@@ -85,57 +88,79 @@ locateContactCreases(const VoxelBand& band,
     std::sin(std::clamp(min_crease_angle, 0.0, 90.0) * detail::kPi / 180.0);
   const double half_width = half_width_cells * cell;
   const int reach = static_cast<int>(std::ceil(window_cells));
+  // One sample per contact cell (the planes of the two faces around it), on threads
+  // over chunks of cells; the chunks' samples are then gathered in cell order.
+  struct Sample
+  {
+    std::array<std::uint32_t, 2> pair{};
+    double turn = 0.0;
+    std::vector<CellId> cells;
+  };
+  constexpr std::size_t kCellsPerChunk = 4096;
+  std::vector<std::vector<Sample>> chunk_samples((band.size() + kCellsPerChunk - 1) /
+                                                 kCellsPerChunk);
+  parallelFor(
+    band.size(), threads, kCellsPerChunk, [&](std::size_t begin, std::size_t end) {
+      std::vector<Sample>& out = chunk_samples[begin / kCellsPerChunk];
+      for (std::size_t c = begin; c < end; ++c) {
+        const std::uint32_t a = cell_labels[c];
+        if (!isFace(a))
+          continue;
+        for (const CellId n : band.neighbours(static_cast<CellId>(c))) {
+          const std::uint32_t b =
+            n == kNoCell ? 0 : cell_labels[static_cast<std::size_t>(n)];
+          if (b == a || !isFace(b))
+            continue;
+          const std::array<std::uint32_t, 2> pair{{std::min(a, b), std::max(a, b)}};
+          if (excluded.count(pair) != 0)
+            continue;
+          const CellCoord at_cell = band.coord(static_cast<CellId>(c));
+          const Eigen::Vector3d at = grid.cellCenter(at_cell);
+          if (features.anyWithin(at, clearance))
+            break;
+          PlaneSums side_a, side_b;
+          index.forEachWithin(at, radius, [&](std::uint32_t i) {
+            if (labels[i] == a)
+              side_a.add(points[i] - at);
+            else if (labels[i] == b)
+              side_b.add(points[i] - at);
+          });
+          CreaseLine line;
+          if (!creaseLine(side_a, side_b, min_sine, line))
+            break;
+          if (!(line.turn >= min_crease_angle))
+            break;
+          Sample sample;
+          sample.pair = pair;
+          sample.turn = line.turn;
+          for (int dz = -reach; dz <= reach; ++dz)
+            for (int dy = -reach; dy <= reach; ++dy)
+              for (int dx = -reach; dx <= reach; ++dx) {
+                const CellId m = band.find(at_cell + CellCoord(dx, dy, dz));
+                if (m == kNoCell)
+                  continue;
+                const std::uint32_t l = cell_labels[static_cast<std::size_t>(m)];
+                if ((l == a || l == b) &&
+                    line.distance(grid.cellCenter(band.coord(m)) - at) <= half_width)
+                  sample.cells.push_back(m);
+              }
+          out.push_back(std::move(sample));
+          break;
+        }
+      }
+    });
   struct Placed
   {
     std::vector<double> turns;
     std::vector<CellId> cells;
   };
   std::map<std::array<std::uint32_t, 2>, Placed> placed;
-  for (std::size_t c = 0; c < band.size(); ++c) {
-    const std::uint32_t a = cell_labels[c];
-    if (!isFace(a))
-      continue;
-    for (const CellId n : band.neighbours(static_cast<CellId>(c))) {
-      const std::uint32_t b =
-        n == kNoCell ? 0 : cell_labels[static_cast<std::size_t>(n)];
-      if (b == a || !isFace(b))
-        continue;
-      const std::array<std::uint32_t, 2> pair{{std::min(a, b), std::max(a, b)}};
-      if (excluded.count(pair) != 0)
-        continue;
-      // one sample per contact cell: the planes of the two faces around it
-      const CellCoord at_cell = band.coord(static_cast<CellId>(c));
-      const Eigen::Vector3d at = grid.cellCenter(at_cell);
-      if (features.anyWithin(at, clearance))
-        break;
-      PlaneSums side_a, side_b;
-      index.forEachWithin(at, radius, [&](std::uint32_t i) {
-        if (labels[i] == a)
-          side_a.add(points[i] - at);
-        else if (labels[i] == b)
-          side_b.add(points[i] - at);
-      });
-      CreaseLine line;
-      if (!creaseLine(side_a, side_b, min_sine, line))
-        break;
-      if (!(line.turn >= min_crease_angle))
-        break;
-      Placed& crease = placed[pair];
-      crease.turns.push_back(line.turn);
-      for (int dz = -reach; dz <= reach; ++dz)
-        for (int dy = -reach; dy <= reach; ++dy)
-          for (int dx = -reach; dx <= reach; ++dx) {
-            const CellId m = band.find(at_cell + CellCoord(dx, dy, dz));
-            if (m == kNoCell)
-              continue;
-            const std::uint32_t l = cell_labels[static_cast<std::size_t>(m)];
-            if ((l == a || l == b) &&
-                line.distance(grid.cellCenter(band.coord(m)) - at) <= half_width)
-              crease.cells.push_back(m);
-          }
-      break;
+  for (std::vector<Sample>& samples : chunk_samples)
+    for (Sample& sample : samples) {
+      Placed& crease = placed[sample.pair];
+      crease.turns.push_back(sample.turn);
+      crease.cells.insert(crease.cells.end(), sample.cells.begin(), sample.cells.end());
     }
-  }
   for (auto& [pair, crease] : placed) {
     if (crease.turns.size() < kMinContactCreaseSamples)
       continue; // a few cells near a corner are no crease

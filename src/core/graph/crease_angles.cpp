@@ -4,6 +4,7 @@
 #include <visfeat/core/graph/crease_angles.h>
 
 #include <visfeat/core/band/voxel_band.h>
+#include <visfeat/core/common/threads.h>
 
 #include "../common/angles.h"
 #include "face_point_index.h"
@@ -13,6 +14,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <map>
 #include <set>
 
@@ -230,13 +232,57 @@ sideTurnDegrees(const std::vector<Eigen::Vector3d>& side_a,
   return turnOfSides(a, b);
 }
 
+namespace {
+
+/** measureCreaseAngles() for one edge from its points (indices into points). */
+CreaseAngle
+measureEdge(const FacePointIndex& index,
+            const std::vector<Eigen::Vector3d>& points,
+            const std::vector<std::uint32_t>& labels,
+            const std::vector<std::uint32_t>& mine,
+            double radius,
+            double walk_below_degrees)
+{
+  CreaseAngle angle;
+  if (mine.empty())
+    return angle;
+  const std::size_t samples =
+    std::min(mine.size(), CreaseAngleParameters::kMaxSamplesPerEdge);
+  std::map<std::array<std::uint32_t, 2>, std::vector<double>> by_pair;
+  for (std::size_t s = 0; s < samples; ++s) {
+    // evenly spread: the middle of the s-th of `samples` equal parts
+    const std::size_t i = mine[(2 * s + 1) * mine.size() / (2 * samples)];
+    const SampleTurn turn =
+      measureSample(index, points, labels, points[i], radius, walk_below_degrees);
+    if (std::isfinite(turn.degrees))
+      by_pair[turn.faces].push_back(turn.degrees);
+  }
+  // The pair most samples saw (the smaller pair among equals).
+  const std::vector<double>* best = nullptr;
+  for (const auto& [pair, turns] : by_pair) {
+    if (best == nullptr || turns.size() > best->size()) {
+      best = &turns;
+      angle.faces = pair;
+    }
+  }
+  if (best != nullptr) {
+    std::vector<double> turns = *best;
+    angle.samples = static_cast<std::uint32_t>(turns.size());
+    angle.degrees = median(turns);
+  }
+  return angle;
+}
+
+} // namespace
+
 std::vector<CreaseAngle>
 measureCreaseAngles(const std::vector<Eigen::Vector3d>& points,
                     const std::vector<std::uint32_t>& labels,
                     const std::vector<FeatureClass>& classes,
                     double cell_size,
                     double window_cells,
-                    double walk_below_degrees)
+                    double walk_below_degrees,
+                    int threads)
 {
   std::vector<CreaseAngle> angles(classes.size());
   const double radius = window_cells * cell_size;
@@ -251,35 +297,12 @@ measureCreaseAngles(const std::vector<Eigen::Vector3d>& points,
       edge_points[l - 1].push_back(static_cast<std::uint32_t>(i));
   }
   const FacePointIndex index(points, labels, classes, radius);
-  for (std::size_t r = 0; r < classes.size(); ++r) {
-    const std::vector<std::uint32_t>& mine = edge_points[r];
-    if (mine.empty())
-      continue;
-    const std::size_t samples =
-      std::min(mine.size(), CreaseAngleParameters::kMaxSamplesPerEdge);
-    std::map<std::array<std::uint32_t, 2>, std::vector<double>> by_pair;
-    for (std::size_t s = 0; s < samples; ++s) {
-      // evenly spread: the middle of the s-th of `samples` equal parts
-      const std::size_t i = mine[(2 * s + 1) * mine.size() / (2 * samples)];
-      const SampleTurn turn =
-        measureSample(index, points, labels, points[i], radius, walk_below_degrees);
-      if (std::isfinite(turn.degrees))
-        by_pair[turn.faces].push_back(turn.degrees);
-    }
-    // The pair most samples saw (the smaller pair among equals).
-    const std::vector<double>* best = nullptr;
-    for (const auto& [pair, turns] : by_pair) {
-      if (best == nullptr || turns.size() > best->size()) {
-        best = &turns;
-        angles[r].faces = pair;
-      }
-    }
-    if (best != nullptr) {
-      std::vector<double> turns = *best;
-      angles[r].samples = static_cast<std::uint32_t>(turns.size());
-      angles[r].degrees = median(turns);
-    }
-  }
+  // Edges are independent: one at a time on the threads (each writes its own entry).
+  parallelFor(classes.size(), threads, 1, [&](std::size_t first, std::size_t last) {
+    for (std::size_t r = first; r < last; ++r)
+      angles[r] =
+        measureEdge(index, points, labels, edge_points[r], radius, walk_below_degrees);
+  });
   return angles;
 }
 
@@ -289,7 +312,8 @@ measureFaceContacts(const VoxelBand& band,
                     const std::vector<Eigen::Vector3d>& points,
                     const std::vector<std::uint32_t>& labels,
                     const std::vector<FeatureClass>& classes,
-                    double window_cells)
+                    double window_cells,
+                    int threads)
 {
   std::vector<CreaseAngle> contacts;
   const double cell = band.grid().cell_size, radius = window_cells * cell;
@@ -318,32 +342,42 @@ measureFaceContacts(const VoxelBand& band,
   const FacePointIndex index(points, labels, classes, radius);
   const double clearance = CreaseAngleParameters::kContactClearanceCells * cell;
   const FacePointIndex features(points, labels, classes, clearance, false);
-  for (auto& [pair, cells] : cells_of) {
-    // only the contact away from edges and vertices
-    const auto near = [&](CellId c) {
-      return features.anyWithin(band.grid().cellCenter(band.coord(c)), clearance);
-    };
-    cells.erase(std::remove_if(cells.begin(), cells.end(), near), cells.end());
-    if (cells.empty())
-      continue;
-    const std::size_t samples =
-      std::min(cells.size(), CreaseAngleParameters::kMaxSamplesPerEdge);
-    std::vector<double> turns;
-    for (std::size_t s = 0; s < samples; ++s) {
-      const CellId c = cells[(2 * s + 1) * cells.size() / (2 * samples)];
-      const Eigen::Vector3d at = band.grid().cellCenter(band.coord(c));
-      const double turn = contactTurn(index, points, labels, at, radius, pair);
-      if (std::isfinite(turn))
-        turns.push_back(turn);
+  // Pairs are independent: one at a time on the threads, each into its own slot,
+  // kept in the pairs' order.
+  std::vector<std::pair<std::array<std::uint32_t, 2>, std::vector<CellId>>> pairs(
+    std::make_move_iterator(cells_of.begin()), std::make_move_iterator(cells_of.end()));
+  std::vector<CreaseAngle> measured(pairs.size());
+  parallelFor(pairs.size(), threads, 1, [&](std::size_t first, std::size_t last) {
+    for (std::size_t p = first; p < last; ++p) {
+      const std::array<std::uint32_t, 2>& pair = pairs[p].first;
+      std::vector<CellId>& cells = pairs[p].second;
+      // only the contact away from edges and vertices
+      const auto near = [&](CellId c) {
+        return features.anyWithin(band.grid().cellCenter(band.coord(c)), clearance);
+      };
+      cells.erase(std::remove_if(cells.begin(), cells.end(), near), cells.end());
+      if (cells.empty())
+        continue;
+      const std::size_t samples =
+        std::min(cells.size(), CreaseAngleParameters::kMaxSamplesPerEdge);
+      std::vector<double> turns;
+      for (std::size_t s = 0; s < samples; ++s) {
+        const CellId c = cells[(2 * s + 1) * cells.size() / (2 * samples)];
+        const Eigen::Vector3d at = band.grid().cellCenter(band.coord(c));
+        const double turn = contactTurn(index, points, labels, at, radius, pair);
+        if (std::isfinite(turn))
+          turns.push_back(turn);
+      }
+      if (turns.size() < CreaseAngleParameters::kMinContactSamples)
+        continue;
+      measured[p].faces = pair;
+      measured[p].samples = static_cast<std::uint32_t>(turns.size());
+      measured[p].degrees = median(turns);
     }
-    if (turns.size() < CreaseAngleParameters::kMinContactSamples)
-      continue;
-    CreaseAngle contact;
-    contact.faces = pair;
-    contact.samples = static_cast<std::uint32_t>(turns.size());
-    contact.degrees = median(turns);
-    contacts.push_back(contact);
-  }
+  });
+  for (const CreaseAngle& contact : measured)
+    if (contact.samples > 0)
+      contacts.push_back(contact);
   return contacts;
 }
 

@@ -68,7 +68,9 @@ constexpr std::size_t kMinContactCreaseSamples = 16;
  *   edge region already separates (their contact is the watershed spilling across it)
  * \param[in] window_cells radius of the fit, cells (CreaseAngleParameters)
  * \param[in] min_crease_angle degrees (CreaseAngleParameters); 0 = none found
- * \param[in] half_width_cells half the width of the crease's cells, cells */
+ * \param[in] half_width_cells half the width of the crease's cells, cells
+ * \param[in] threads threads over the contact cells (0 = all available); the result
+ *            is the same for any count */
 std::vector<ContactCrease>
 locateContactCreases(const VoxelBand& band,
                      const std::vector<std::uint32_t>& cell_labels,
@@ -78,6 +80,7 @@ locateContactCreases(const VoxelBand& band,
                      const std::set<std::array<std::uint32_t, 2>>& excluded,
                      double window_cells,
                      double min_crease_angle,
-                     double half_width_cells);
+                     double half_width_cells,
+                     int threads = 1);
 
 } // namespace visfeat

@@ -119,13 +119,15 @@ double sideTurnDegrees(const std::vector<Eigen::Vector3d>& side_a,
  * sharpest met walking kContactScanWindows windows to both sides across (a chamfer
  * narrower than the separation reads shallow at its middle). The estimator passes its
  * minimum crease angle: the walk only raises a turn, so it matters only below it.
- * Deterministic. */
+ * Edges are measured on up to `threads` threads (0 = all available); the result is
+ * the same for any count. */
 std::vector<CreaseAngle> measureCreaseAngles(const std::vector<Eigen::Vector3d>& points,
                                              const std::vector<std::uint32_t>& labels,
                                              const std::vector<FeatureClass>& classes,
                                              double cell_size,
                                              double window_cells,
-                                             double walk_below_degrees = 180.0);
+                                             double walk_below_degrees = 180.0,
+                                             int threads = 1);
 
 /** \brief The turn where two face regions touch with no edge region between them
  * (their cells are 6-neighbours): the watershed splits a smooth blend (a fillet, a
@@ -138,15 +140,16 @@ std::vector<CreaseAngle> measureCreaseAngles(const std::vector<Eigen::Vector3d>&
  * and the sharpest turn met walking kContactScanWindows windows to both sides across
  * the contact; a sample's turn is the larger; the contact's the median over at least
  * kMinContactSamples samples, else the pair is left out.
- * cell_labels: per band cell its region label; points, labels, classes and
- * window_cells as measureCreaseAngles(). */
+ * cell_labels: per band cell its region label; points, labels, classes,
+ * window_cells and threads as measureCreaseAngles(). Pairs in increasing order. */
 std::vector<CreaseAngle>
 measureFaceContacts(const VoxelBand& band,
                     const std::vector<std::uint32_t>& cell_labels,
                     const std::vector<Eigen::Vector3d>& points,
                     const std::vector<std::uint32_t>& labels,
                     const std::vector<FeatureClass>& classes,
-                    double window_cells);
+                    double window_cells,
+                    int threads = 1);
 
 /** \brief Which region each region joins under the rule, per label (index 0 unused):
  * itself when kept.
