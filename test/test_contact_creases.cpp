@@ -144,3 +144,111 @@ TEST(ContactCreases, TheSameForAnyThreadCount)
     EXPECT_EQ(other[0].cells, one[0].cells);
   }
 }
+
+/** The corner of a cube: three quarter-planes x = 0, y = 0, z = 0 (cell units, cell
+ * size 1, the planes on cell centres) of `size` cells, each a face region, with no
+ * edge or vertex region between them. */
+Crease
+cornerOfThreePlanes(double size)
+{
+  Crease c;
+  c.classes = {FeatureClass::kFace, FeatureClass::kFace, FeatureClass::kFace};
+  visfeat::GridSpec grid;
+  grid.dims = CellCoord(40, 40, 40);
+  grid.cell_size = 1.0;
+  grid.origin = Eigen::Vector3d(-4.5, -4.5, -4.5);
+  for (double u = 0.125; u < size; u += 0.25)
+    for (double v = 0.125; v < size; v += 0.25) {
+      c.points.emplace_back(u, v, 0.0); // label 1: z = 0
+      c.labels.push_back(1);
+      c.points.emplace_back(0.0, u, v); // label 2: x = 0
+      c.labels.push_back(2);
+      c.points.emplace_back(v, 0.0, u); // label 3: y = 0
+      c.labels.push_back(3);
+    }
+  std::vector<CellCoord> cells;
+  for (const Eigen::Vector3d& p : c.points)
+    cells.push_back(grid.cellOf(p));
+  const auto before = [](const CellCoord& a, const CellCoord& b) {
+    return std::lexicographical_compare(a.data(), a.data() + 3, b.data(), b.data() + 3);
+  };
+  std::sort(cells.begin(), cells.end(), before);
+  cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
+  visfeat::VoxelBand::Options options;
+  options.repair = false;
+  c.band = visfeat::VoxelBand::fromCells(grid, cells, options);
+  std::vector<std::array<int, 4>> votes(c.band.size(), {0, 0, 0, 0});
+  for (std::size_t i = 0; i < c.points.size(); ++i)
+    ++votes[static_cast<std::size_t>(c.band.find(grid.cellOf(c.points[i])))]
+           [c.labels[i]];
+  c.cell_labels.resize(c.band.size());
+  for (std::size_t k = 0; k < votes.size(); ++k)
+    c.cell_labels[k] = static_cast<std::uint32_t>(
+      std::max_element(votes[k].begin() + 1, votes[k].end()) - votes[k].begin());
+  return c;
+}
+
+TEST(ContactCreases, ThreeCreasesOfACornerMeetAtOneVertex)
+{
+  const Crease c = cornerOfThreePlanes(24.0);
+  const std::vector<ContactCrease> creases = locate(c);
+  ASSERT_EQ(creases.size(), 3u);
+  // both ends of each leave the band (past the corner, and at the sheet's border)
+  for (const ContactCrease& crease : creases) {
+    ASSERT_EQ(crease.open_ends.size(), 2u) << crease.faces[0] << crease.faces[1];
+    EXPECT_FALSE(crease.open_ends[0].meets_edge);
+    EXPECT_FALSE(crease.open_ends[1].meets_edge);
+    EXPECT_LT(std::min(crease.open_ends[0].at.norm(), crease.open_ends[1].at.norm()),
+              3.0);
+  }
+  const std::vector<std::vector<CellId>> corners =
+    visfeat::contactCorners(c.band, c.cell_labels, c.classes, creases);
+  ASSERT_EQ(corners.size(), 1u);
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+  bool has_origin = false;
+  for (const CellId cell : corners[0]) {
+    const Eigen::Vector3d centre = c.band.grid().cellCenter(c.band.coord(cell));
+    mean += centre;
+    has_origin = has_origin || centre.norm() < 0.5;
+    EXPECT_LE(centre.norm(), visfeat::kContactCornerMaxRadiusCells + 1e-9);
+  }
+  mean /= static_cast<double>(corners[0].size());
+  EXPECT_TRUE(has_origin);
+  EXPECT_LT(mean.norm(), 1.5);
+
+  // two of the three creases alone still meet there; one alone makes no corner
+  const std::vector<ContactCrease> two(creases.begin(), creases.begin() + 2);
+  EXPECT_EQ(visfeat::contactCorners(c.band, c.cell_labels, c.classes, two).size(), 1u);
+  const std::vector<ContactCrease> one(creases.begin(), creases.begin() + 1);
+  EXPECT_TRUE(visfeat::contactCorners(c.band, c.cell_labels, c.classes, one).empty());
+}
+
+TEST(ContactCreases, ACreaseThatRunsIntoAnEdgeGetsACornerThere)
+{
+  // the corner's third face (label 3, y = 0) made an edge region: the crease between
+  // faces 1 and 2 runs into it and ends there
+  Crease c = cornerOfThreePlanes(24.0);
+  c.classes[2] = FeatureClass::kEdge;
+  for (std::size_t k = 0; k < c.band.size(); ++k) // the whole layer y = 0 is the edge's
+    if (c.band.grid().cellCenter(c.band.coord(static_cast<CellId>(k))).y() < 0.5)
+      c.cell_labels[k] = 3;
+  const std::vector<ContactCrease> creases = locate(c);
+  ASSERT_EQ(creases.size(), 1u);
+  EXPECT_EQ(creases[0].faces[0], 1u);
+  EXPECT_EQ(creases[0].faces[1], 2u);
+  // the end at the corner meets the edge; the other leaves the sheet's border
+  ASSERT_EQ(creases[0].open_ends.size(), 2u);
+  const auto& ends = creases[0].open_ends;
+  const auto& inner = ends[0].at.norm() < ends[1].at.norm() ? ends[0] : ends[1];
+  const auto& outer = &inner == &ends[0] ? ends[1] : ends[0];
+  EXPECT_TRUE(inner.meets_edge);
+  EXPECT_FALSE(outer.meets_edge);
+  EXPECT_LT(inner.at.norm(), 3.0);
+  const std::vector<std::vector<CellId>> corners =
+    visfeat::contactCorners(c.band, c.cell_labels, c.classes, creases);
+  ASSERT_EQ(corners.size(), 1u);
+  for (const CellId cell : corners[0]) {
+    EXPECT_NE(c.cell_labels[static_cast<std::size_t>(cell)], 3u); // faces' cells only
+    EXPECT_LT(c.band.grid().cellCenter(c.band.coord(cell)).norm(), 12.0);
+  }
+}

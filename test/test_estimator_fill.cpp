@@ -303,6 +303,15 @@ TEST(EstimatorFill, AMeshGetsTheTopologyResolutionWhateverItsPointsDensity)
   EXPECT_EQ(r.resolution, visfeat::kTopologyResolution);
   EXPECT_NE(r.reason.find("lowered to 256"), std::string::npos) << r.reason;
   EXPECT_EQ(counts(est), (std::array<std::size_t, 4>{8, 12, 6, 0}));
+  // 400,000 points support about 220 cells, less than 1.25 x below 256 (a cloud would
+  // not be filled for so little): the mesh still gets 256
+  est.setInputCloud(sparseCloud(model, 400000, 6));
+  est.compute(out);
+  ASSERT_EQ(est.getErrorMessage(), "");
+  const visfeat::ResolutionEstimate& fewer = est.getResolutionEstimate();
+  EXPECT_EQ(fewer.resolution, visfeat::kTopologyResolution) << fewer.reason;
+  EXPECT_NE(fewer.reason.find("raised to 256"), std::string::npos) << fewer.reason;
+  EXPECT_EQ(counts(est), (std::array<std::size_t, 4>{8, 12, 6, 0}));
 }
 
 TEST(EstimatorFill, TheMeshFillNeedsAMesh)

@@ -115,7 +115,16 @@ TEST_P(SteppedBlock, SearchResolvesTheRisers)
   EXPECT_LT(error(searched), error(coarse))
     << searched.counts[1] << "/" << searched.counts[2] << " against "
     << coarse.counts[1] << "/" << coarse.counts[2] << " at 256";
-  EXPECT_TRUE(searched.warnings.empty()) << searched.warnings.front();
+  // no warning of the band or the map; the graph's own (findGraphGaps) only where the
+  // corners are not all there (an edge left with one corner; two corners merged into
+  // one leave a closed graph and no warning: rotation 23, 14/22 at 512)
+  const bool exact = searched.counts[1] == truth.vertices.size() &&
+                     searched.counts[2] == truth.curves.size();
+  for (const std::string& w : searched.warnings)
+    EXPECT_TRUE(mentions(w, "the graph is not that of a closed part")) << w;
+  if (exact) {
+    EXPECT_TRUE(searched.warnings.empty()) << searched.warnings.front();
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(Rotations, SteppedBlock, testing::Values(21u, 22u, 23u));

@@ -491,6 +491,8 @@ private:
   /** Sets run.point_noise where the fill measures it. */
   std::vector<CellCoord> fillCells(Run& run, const PointCloudIn& surface) const;
   void checkResults(const Results& results, Run& run) const;
+  /** A warning where the graph is not that of a closed part (findGraphGaps()). */
+  void checkGraph(const Results& results, Run& run) const;
   void checkMemoryBudget(const Run& run) const;
   void checkBandMemory(const VoxelBand& band,
                        std::uint64_t mask_bytes,

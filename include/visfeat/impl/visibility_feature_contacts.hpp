@@ -1,13 +1,16 @@
 // VisibilityFeatureEstimation (not for inclusion on its own): edges along the creases
-// where two faces touch without an edge region between them.
+// where two faces touch without an edge region between them, and the check of the
+// graph they complete.
 #pragma once
 
 #include <visfeat/core/graph/contact_creases.h>
+#include <visfeat/core/graph/graph_gaps.h>
 #include <visfeat/impl/visibility_feature_estimation.hpp>
 
 #include <array>
 #include <cmath>
 #include <set>
+#include <sstream>
 #include <vector>
 
 namespace visfeat {
@@ -52,16 +55,27 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::addContactCreases(
                                std::numeric_limits<double>::quiet_NaN());
   for (std::uint32_t id = 1; id <= results.graph.size(); ++id)
     angle_of[id] = results.graph.node(id).crease_angle;
+  // the creases as edges, then the corners where they end as vertices
+  const std::vector<std::vector<CellId>> corners =
+    contactCorners(results.band, results.segmentation.cellLabels(), classes, creases);
   std::vector<std::vector<CellId>> cells;
-  for (const ContactCrease& crease : creases)
+  std::vector<FeatureClass> new_classes;
+  for (const ContactCrease& crease : creases) {
     cells.push_back(crease.cells);
+    new_classes.push_back(FeatureClass::kEdge);
+  }
+  for (const std::vector<CellId>& corner : corners) {
+    cells.push_back(corner);
+    new_classes.push_back(FeatureClass::kVertex);
+  }
   const std::vector<std::uint32_t> renumbered =
-    results.segmentation.addEdgeRegions(cells);
+    results.segmentation.addRegions(cells, new_classes);
   const std::vector<std::uint32_t>& cell_labels = results.segmentation.cellLabels();
   const std::vector<Region>& regions = results.segmentation.regions();
 
-  // Points: face points of a cell now in a new region take it, the others their
-  // region's new label (a point keeps the label the skeleton gave it).
+  // Points: a point of a cell now in a new region takes it when its class ranks
+  // below the region's (face < edge < vertex), the others their region's new label
+  // (a point keeps the label the skeleton gave it).
   std::vector<char> fresh(regions.size() + 1, 1); // labels of the new regions
   for (const std::uint32_t label : renumbered)
     fresh[label] = 0;
@@ -75,9 +89,14 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::addContactCreases(
                ? results.band.pointCell()[index]
                : results.band.find(grid.cellOf(Eigen::Vector3d(p.x, p.y, p.z)));
     std::uint32_t label = p.label == 0 ? 0 : renumbered[p.label];
-    if (cell != kNoCell && fresh[cell_labels[static_cast<std::size_t>(cell)]] &&
-        p.feature_class == static_cast<std::uint8_t>(FeatureClass::kFace))
-      label = cell_labels[static_cast<std::size_t>(cell)];
+    if (cell != kNoCell) {
+      const std::uint32_t now = cell_labels[static_cast<std::size_t>(cell)];
+      const auto point_class = static_cast<FeatureClass>(p.feature_class);
+      if (fresh[now] && (point_class == FeatureClass::kFace ||
+                         (point_class == FeatureClass::kEdge &&
+                          regions[now - 1].feature_class == FeatureClass::kVertex)))
+        label = now;
+    }
     if (label == 0 && cell != kNoCell)
       label = cell_labels[static_cast<std::size_t>(cell)];
     p.label = label;
@@ -89,12 +108,39 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::addContactCreases(
     if (renumbered[old] != 0 && std::isfinite(angle_of[old]) &&
         results.graph.node(renumbered[old]).feature_class == FeatureClass::kEdge)
       results.graph.setCreaseAngle(renumbered[old], angle_of[old]);
-  for (std::size_t k = 0; k < creases.size(); ++k) {
-    const std::uint32_t label =
-      cell_labels[static_cast<std::size_t>(creases[k].cells.front())];
-    if (label != 0 && results.graph.node(label).feature_class == FeatureClass::kEdge)
-      results.graph.setCreaseAngle(label, creases[k].degrees);
-  }
+  for (std::size_t k = 0; k < creases.size(); ++k)
+    for (const CellId c : creases[k].cells) { // a corner may hold its first cells
+      const std::uint32_t label = cell_labels[static_cast<std::size_t>(c)];
+      if (label != 0 && fresh[label] &&
+          results.graph.node(label).feature_class == FeatureClass::kEdge) {
+        results.graph.setCreaseAngle(label, creases[k].degrees);
+        break;
+      }
+    }
+}
+
+template <typename PointInT, typename PointOutT>
+void
+VisibilityFeatureEstimation<PointInT, PointOutT>::checkGraph(const Results& results,
+                                                             Run& run) const
+{
+  // a one-view depth image is an open surface: its edges end at its border
+  if (run.segmentation.raw || !run.segmentation.complete_regions ||
+      run.fill == SurfaceFill::kOrganized ||
+      !run.warnings.empty()) // a warning of the band or the map says more
+    return;
+  const GraphGaps gaps = findGraphGaps(results.graph);
+  if (!gaps.any())
+    return;
+  const int min_radius = run.segmentation.components.min_radius;
+  std::ostringstream w;
+  w << "the graph is not that of a closed part: " << gaps.describe()
+    << ". Features closer than about " << 2 * min_radius << " cells (2 min_radius) at "
+    << "resolution " << run.resolution.resolution
+    << " were not all separated: read the graph as approximate, or raise the "
+       "resolution (the border of an open scan also leaves edges without their outer "
+       "corner)";
+  run.warnings.push_back(w.str());
 }
 
 } // namespace visfeat

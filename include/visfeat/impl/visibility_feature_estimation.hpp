@@ -539,6 +539,7 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::checkResults(const Results& re
       r << "; lower the resolution";
     run.warnings.push_back(r.str());
   }
+  checkGraph(results, run);
 }
 
 template <typename PointInT, typename PointOutT>

@@ -108,7 +108,9 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::chooseResolution(
     const int raised = mesh_ ? kTopologyResolution
                              : static_cast<int>(std::min<double>(
                                  kTopologyResolution, std::floor(supported)));
-    if (raised >= kMinFillRaise * from_density) {
+    // a mesh always gets the topology's resolution (its band is exact at any); a
+    // cloud only where the fill makes a worthwhile difference
+    if (mesh_ || raised >= kMinFillRaise * from_density) {
       std::ostringstream reason;
       reason << run.resolution.reason << "; the points alone support " << from_density
              << ", raised to " << raised << " for the topology ("

@@ -6,6 +6,8 @@
 #include "face_point_index.h"
 #include "plane_sums.h"
 
+#include <Eigen/Eigenvalues>
+
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -56,6 +58,125 @@ creaseLine(const PlaneSums& a, const PlaneSums& b, double min_sine, CreaseLine& 
   return true;
 }
 
+/** One end of a crease: its outermost sample's centre and line, and the way out. */
+struct CreaseEnd
+{
+  Eigen::Vector3d at;
+  CreaseLine line;
+  Eigen::Vector3d outward;
+};
+
+/** The two ends of a crease: the samples outermost along the main axis of the
+ * samples' centres, each with its line's direction turned away from the other end. */
+template <typename SamplePtr>
+std::vector<CreaseEnd>
+creaseEnds(const std::vector<SamplePtr>& samples)
+{
+  std::vector<CreaseEnd> ends;
+  if (samples.size() < 2)
+    return ends;
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+  for (const auto& s : samples)
+    mean += s->at;
+  mean /= static_cast<double>(samples.size());
+  Eigen::Matrix3d scatter = Eigen::Matrix3d::Zero();
+  for (const auto& s : samples)
+    scatter += (s->at - mean) * (s->at - mean).transpose();
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(scatter);
+  const Eigen::Vector3d axis = solver.eigenvectors().col(2);
+  std::size_t lo = 0, hi = 0;
+  for (std::size_t i = 1; i < samples.size(); ++i) {
+    const double t = (samples[i]->at - mean).dot(axis);
+    if (t < (samples[lo]->at - mean).dot(axis))
+      lo = i;
+    if (t > (samples[hi]->at - mean).dot(axis))
+      hi = i;
+  }
+  for (const auto& [i, sign] : {std::make_pair(lo, -1.0), std::make_pair(hi, 1.0)}) {
+    CreaseEnd end{samples[i]->at, samples[i]->line, sign * axis};
+    if (end.line.direction.dot(end.outward) < 0.0)
+      end.line.direction = -end.line.direction;
+    end.outward = end.line.direction;
+    ends.push_back(end);
+  }
+  return ends;
+}
+
+/** Where a crease's line, followed beyond its end, went. */
+struct Extension
+{
+  enum Outcome
+  {
+    kMetVertex, // it touches a vertex region: the graph's arc
+    kMetEdge,   // it touches an edge region: a corner is missing there
+    kLeftFaces, // it left its two faces (into a third face, or off the band past a
+                // convex corner): a corner if other creases end there
+    kRanOut     // still on its faces after `length`: nothing to meet
+  };
+  Outcome outcome = kRanOut;
+  std::vector<CellId> cells; // of the two faces, along the line
+  Eigen::Vector3d at;        // the last point followed (world units)
+};
+
+/** Cells of the two faces of `pair` along a crease's line beyond its end, up to
+ * `length` (world units) or until the line meets an edge or vertex region or leaves
+ * the two faces. */
+Extension
+extendToFeature(const VoxelBand& band,
+                const std::vector<std::uint32_t>& cell_labels,
+                const std::vector<FeatureClass>& classes,
+                const std::array<std::uint32_t, 2>& pair,
+                const Eigen::Vector3d& at,
+                const CreaseLine& line,
+                const Eigen::Vector3d& outward,
+                double half_width,
+                double length)
+{
+  const GridSpec& grid = band.grid();
+  const double step = 0.5 * grid.cell_size;
+  const Eigen::Vector3d origin = at + line.point;
+  const double start = (at - origin).dot(outward);
+  Extension extension;
+  for (double t = step; t <= length; t += step) {
+    const Eigen::Vector3d x = origin + (start + t) * outward;
+    extension.at = x;
+    const CellCoord home = grid.cellOf(x);
+    bool on_faces = false;
+    FeatureClass met = FeatureClass::kNone;
+    for (int dz = -1; dz <= 1; ++dz)
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+          const CellId m = band.find(home + CellCoord(dx, dy, dz));
+          if (m == kNoCell)
+            continue;
+          const Eigen::Vector3d centre = grid.cellCenter(band.coord(m));
+          if (line.distance(centre - at) > half_width)
+            continue;
+          const std::uint32_t l = cell_labels[static_cast<std::size_t>(m)];
+          const FeatureClass c =
+            l == 0 || l > classes.size() ? FeatureClass::kNone : classes[l - 1];
+          if (l == pair[0] || l == pair[1]) {
+            on_faces = true;
+            extension.cells.push_back(m);
+          } else if (c == FeatureClass::kVertex ||
+                     (c == FeatureClass::kEdge && met != FeatureClass::kVertex)) {
+            met = c;
+          }
+        }
+    if (met != FeatureClass::kNone) {
+      extension.outcome =
+        met == FeatureClass::kVertex ? Extension::kMetVertex : Extension::kMetEdge;
+      return extension;
+    }
+    if (!on_faces) {
+      extension.outcome = Extension::kLeftFaces;
+      return extension;
+    }
+  }
+  extension.cells.clear();
+  return extension;
+}
+
 } // namespace
 
 std::vector<ContactCrease>
@@ -88,12 +209,17 @@ locateContactCreases(const VoxelBand& band,
     std::sin(std::clamp(min_crease_angle, 0.0, 90.0) * detail::kPi / 180.0);
   const double half_width = half_width_cells * cell;
   const int reach = static_cast<int>(std::ceil(window_cells));
+  // the samples stop kContactClearanceCells from features, their cells `reach` beyond
+  const double extension_length =
+    (CreaseAngleParameters::kContactClearanceCells + 2.0) * cell;
   // One sample per contact cell (the planes of the two faces around it), on threads
   // over chunks of cells; the chunks' samples are then gathered in cell order.
   struct Sample
   {
     std::array<std::uint32_t, 2> pair{};
     double turn = 0.0;
+    Eigen::Vector3d at = Eigen::Vector3d::Zero(); // the contact cell's centre
+    CreaseLine line;                              // relative to at
     std::vector<CellId> cells;
   };
   constexpr std::size_t kCellsPerChunk = 4096;
@@ -133,6 +259,8 @@ locateContactCreases(const VoxelBand& band,
           Sample sample;
           sample.pair = pair;
           sample.turn = line.turn;
+          sample.at = at;
+          sample.line = line;
           for (int dz = -reach; dz <= reach; ++dz)
             for (int dy = -reach; dy <= reach; ++dy)
               for (int dx = -reach; dx <= reach; ++dx) {
@@ -153,6 +281,7 @@ locateContactCreases(const VoxelBand& band,
   {
     std::vector<double> turns;
     std::vector<CellId> cells;
+    std::vector<const Sample*> samples;
   };
   std::map<std::array<std::uint32_t, 2>, Placed> placed;
   for (std::vector<Sample>& samples : chunk_samples)
@@ -160,6 +289,7 @@ locateContactCreases(const VoxelBand& band,
       Placed& crease = placed[sample.pair];
       crease.turns.push_back(sample.turn);
       crease.cells.insert(crease.cells.end(), sample.cells.begin(), sample.cells.end());
+      crease.samples.push_back(&sample);
     }
   for (auto& [pair, crease] : placed) {
     if (crease.turns.size() < kMinContactCreaseSamples)
@@ -172,6 +302,15 @@ locateContactCreases(const VoxelBand& band,
                      crease.turns.end());
     result.degrees = crease.turns[crease.turns.size() / 2];
     result.samples = static_cast<std::uint32_t>(crease.turns.size());
+    for (const CreaseEnd& end : creaseEnds(crease.samples)) {
+      const Extension more =
+        extendToFeature(band, cell_labels, classes, pair, end.at, end.line, end.outward,
+                        half_width, extension_length);
+      crease.cells.insert(crease.cells.end(), more.cells.begin(), more.cells.end());
+      if (more.outcome == Extension::kMetEdge || more.outcome == Extension::kLeftFaces)
+        result.open_ends.push_back(
+          {more.at, end.outward, more.outcome == Extension::kMetEdge});
+    }
     std::sort(crease.cells.begin(), crease.cells.end());
     crease.cells.erase(std::unique(crease.cells.begin(), crease.cells.end()),
                        crease.cells.end());
@@ -179,6 +318,103 @@ locateContactCreases(const VoxelBand& band,
     creases.push_back(std::move(result));
   }
   return creases;
+}
+
+std::vector<std::vector<CellId>>
+contactCorners(const VoxelBand& band,
+               const std::vector<std::uint32_t>& cell_labels,
+               const std::vector<FeatureClass>& classes,
+               const std::vector<ContactCrease>& creases)
+{
+  const GridSpec& grid = band.grid();
+  const double cell = grid.cell_size;
+  const double gather = kContactCornerGatherCells * cell;
+  struct End
+  {
+    std::size_t crease;
+    const ContactCrease::End* end;
+  };
+  std::vector<End> ends;
+  for (std::size_t k = 0; k < creases.size(); ++k)
+    for (const ContactCrease::End& e : creases[k].open_ends)
+      ends.push_back({k, &e});
+  std::vector<char> used(ends.size(), 0);
+  std::vector<std::vector<CellId>> corners;
+  for (std::size_t i = 0; i < ends.size(); ++i) {
+    if (used[i])
+      continue;
+    // the ends that meet here: one that runs into an edge alone; ends that left
+    // their faces with those of other creases near them
+    std::vector<std::size_t> group{i};
+    if (!ends[i].end->meets_edge)
+      for (std::size_t j = i + 1; j < ends.size(); ++j) {
+        if (used[j] || ends[j].end->meets_edge)
+          continue;
+        bool fresh = true, near = false;
+        for (const std::size_t g : group) {
+          fresh = fresh && ends[g].crease != ends[j].crease;
+          near = near || (ends[g].end->at - ends[j].end->at).norm() <= gather;
+        }
+        if (fresh && near)
+          group.push_back(j);
+      }
+    if (!ends[i].end->meets_edge && group.size() < 2)
+      continue;
+    for (const std::size_t g : group)
+      used[g] = 1;
+    // the corner: the point nearest every end's line (least squares), or the ends'
+    // mean where the lines are near parallel or the point lies far from the ends
+    Eigen::Matrix3d a = Eigen::Matrix3d::Zero();
+    Eigen::Vector3d b = Eigen::Vector3d::Zero(), mean = Eigen::Vector3d::Zero();
+    for (const std::size_t g : group) {
+      const ContactCrease::End& e = *ends[g].end;
+      const Eigen::Matrix3d off =
+        Eigen::Matrix3d::Identity() - e.direction * e.direction.transpose();
+      a += off;
+      b += off * e.at;
+      mean += e.at;
+    }
+    mean /= static_cast<double>(group.size());
+    Eigen::Vector3d corner = mean;
+    if (group.size() >= 2) {
+      const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(a);
+      if (solver.eigenvalues()(0) > 0.05 * solver.eigenvalues()(2)) {
+        const Eigen::Vector3d x = a.ldlt().solve(b);
+        bool close = true;
+        for (const std::size_t g : group)
+          close = close && (x - ends[g].end->at).norm() <= gather;
+        if (close)
+          corner = x;
+      }
+    }
+    double reach = 0.0;
+    for (const std::size_t g : group)
+      reach = std::max(reach, (corner - ends[g].end->at).norm());
+    const double radius =
+      std::clamp(reach + 0.5 * cell, kContactCornerRadiusCells * cell,
+                 kContactCornerMaxRadiusCells * cell);
+    // the face cells within the radius
+    std::vector<CellId> cells;
+    const CellCoord home = grid.cellOf(corner);
+    const int r = static_cast<int>(std::ceil(radius / cell));
+    for (int dz = -r; dz <= r; ++dz)
+      for (int dy = -r; dy <= r; ++dy)
+        for (int dx = -r; dx <= r; ++dx) {
+          const CellId m = band.find(home + CellCoord(dx, dy, dz));
+          if (m == kNoCell)
+            continue;
+          const std::uint32_t l = cell_labels[static_cast<std::size_t>(m)];
+          if (l == 0 || l > classes.size() || classes[l - 1] != FeatureClass::kFace)
+            continue;
+          if ((grid.cellCenter(band.coord(m)) - corner).norm() <= radius)
+            cells.push_back(m);
+        }
+    if (!cells.empty()) {
+      std::sort(cells.begin(), cells.end());
+      corners.push_back(std::move(cells));
+    }
+  }
+  return corners;
 }
 
 } // namespace visfeat

@@ -169,21 +169,49 @@ FeatureSegmentation::mergeRegions(const std::vector<std::uint32_t>& into)
 std::vector<std::uint32_t>
 FeatureSegmentation::addEdgeRegions(const std::vector<std::vector<CellId>>& cells)
 {
+  return addRegions(cells,
+                    std::vector<FeatureClass>(cells.size(), FeatureClass::kEdge));
+}
+
+std::vector<std::uint32_t>
+FeatureSegmentation::addRegions(const std::vector<std::vector<CellId>>& cells,
+                                const std::vector<FeatureClass>& list_classes)
+{
+  if (list_classes.size() != cells.size())
+    throw Error("addRegions: " + std::to_string(cells.size()) + " lists of cells but " +
+                std::to_string(list_classes.size()) + " classes");
+  // a list takes the cells of lower rank: faces for an edge, faces and edges for a
+  // vertex
+  const auto rank = [](FeatureClass c) {
+    return c == FeatureClass::kFace     ? 1
+           : c == FeatureClass::kEdge   ? 2
+           : c == FeatureClass::kVertex ? 3
+                                        : 0;
+  };
   const std::size_t n = regions_.size();
-  std::vector<FeatureClass> classes(n + cells.size() + 1, FeatureClass::kEdge);
-  classes[0] = FeatureClass::kNone;
+  std::vector<FeatureClass> classes(n + cells.size() + 1, FeatureClass::kNone);
   for (std::size_t l = 1; l <= n; ++l)
     classes[l] = regions_[l - 1].feature_class;
-  for (std::size_t r = 0; r < cells.size(); ++r)
+  for (std::size_t r = 0; r < cells.size(); ++r) {
+    if (list_classes[r] != FeatureClass::kEdge &&
+        list_classes[r] != FeatureClass::kVertex)
+      throw Error("addRegions: a new region must be an edge or a vertex");
+    classes[n + 1 + r] = list_classes[r];
+  }
+  for (std::size_t r = 0; r < cells.size(); ++r) {
+    const auto label_of_list = static_cast<std::uint32_t>(n + 1 + r);
     for (const CellId c : cells[r]) {
       if (c < 0 || static_cast<std::size_t>(c) >= labels_.size())
-        throw Error("addEdgeRegions: cell " + std::to_string(c) +
-                    " is not one of the " + std::to_string(labels_.size()) +
-                    " band cells");
+        throw Error("addRegions: cell " + std::to_string(c) + " is not one of the " +
+                    std::to_string(labels_.size()) + " band cells");
       std::uint32_t& label = labels_[static_cast<std::size_t>(c)];
-      if (label != 0 && label <= n && classes[label] == FeatureClass::kFace)
-        label = static_cast<std::uint32_t>(n + 1 + r);
+      // old regions keep their edges and vertices; new lists take from earlier ones
+      const bool old_feature =
+        label != 0 && label <= n && classes[label] != FeatureClass::kFace;
+      if (label != 0 && !old_feature && rank(classes[label]) < rank(list_classes[r]))
+        label = label_of_list;
     }
+  }
   // an old region whose cells all moved holds no cell any more: 0
   std::vector<std::uint32_t> renumbered =
     renumberRegions(labels_, classes, cores_.cellLabels(), regions_);

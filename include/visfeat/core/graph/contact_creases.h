@@ -32,9 +32,33 @@ struct ContactCrease
   /** \brief Contact cells whose sides turned by at least the minimum crease angle. */
   std::uint32_t samples = 0;
   /** \brief Cells of the two faces whose centres lie within the half width of the
-   * crease's line, ascending ids. */
+   * crease's line, ascending ids (with those of its line followed beyond its ends). */
   std::vector<CellId> cells;
+
+  /** \brief An end of the crease that touches no vertex region: its line, followed
+   * beyond the last sample, ran into an edge region (meets_edge) or left the two faces
+   * (into a third face, or off the band past a convex corner or a border), at `at`
+   * (world units), going `direction` (unit, outward). */
+  struct End
+  {
+    Eigen::Vector3d at = Eigen::Vector3d::Zero();
+    Eigen::Vector3d direction = Eigen::Vector3d::Zero();
+    bool meets_edge = false;
+  };
+  /** \brief Its ends that need a corner (contactCorners()). */
+  std::vector<End> open_ends;
 };
+
+/** \brief Ends of contact creases farther apart than this are not one corner, cells:
+ * 10, the clearance (CreaseAngleParameters::kContactClearanceCells) plus 2, as each
+ * crease's samples stop that far from the features around a corner. */
+constexpr double kContactCornerGatherCells = 10.0;
+
+/** \brief Least radius of a corner's cells, cells: 1.5 (the 3x3x3 block around it). */
+constexpr double kContactCornerRadiusCells = 1.5;
+
+/** \brief Largest radius of a corner's cells, cells: 4 (a window). */
+constexpr double kContactCornerMaxRadiusCells = 4.0;
 
 /** \brief Half the width of a contact crease's cells, cells: 1, as feature_width keeps
  * about the skeleton of an edge (its points then lie within about 2 cells of the
@@ -82,5 +106,26 @@ locateContactCreases(const VoxelBand& band,
                      double min_crease_angle,
                      double half_width_cells,
                      int threads = 1);
+
+/** \brief The corners where contact creases end (ContactCrease::open_ends), as lists
+ * of face cells to become vertex regions.
+ *
+ * A crease's line followed beyond its last sample (up to kContactCornerGatherCells)
+ * touches a vertex (nothing to add), an edge region (a corner where it meets that
+ * edge), or leaves its two faces (into a third face, or off the band: past a convex
+ * corner the line leaves the surface): ends of two or more creases that left
+ * their faces within kContactCornerGatherCells of each other meet at one corner, the
+ * point nearest all their lines (least squares; their ends' mean where the lines are
+ * near parallel or the point lies farther than that from an end). A corner's cells
+ * are the face cells (by cell_labels, before the creases are added) within the
+ * distance of its farthest end plus half a cell, at least kContactCornerRadiusCells
+ * and at most kContactCornerMaxRadiusCells. A lone end that left its faces makes no
+ * corner (a crease that fades into a blend, or reaches a border of an open scan).
+ * Deterministic (creases in order). */
+std::vector<std::vector<CellId>>
+contactCorners(const VoxelBand& band,
+               const std::vector<std::uint32_t>& cell_labels,
+               const std::vector<FeatureClass>& classes,
+               const std::vector<ContactCrease>& creases);
 
 } // namespace visfeat

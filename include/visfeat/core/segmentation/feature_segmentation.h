@@ -197,6 +197,17 @@ public:
   std::vector<std::uint32_t>
   addEdgeRegions(const std::vector<std::vector<CellId>>& cells);
 
+  /** \brief New edge or vertex regions, one per list of cells, in list order: a listed
+   * cell takes the list's new label when it belongs to a region of lower rank (face <
+   * edge < vertex) that is a face of before the call or a region of an earlier list
+   * (the edges and vertices of before are never taken). E.g. the contact creases as
+   * edges, then the corners where they meet as vertices. Renumbered as
+   * addEdgeRegions(), which is this with every list an edge.
+   * \throws visfeat::Error for a cell id out of range, a class that is not an edge or
+   *         a vertex, or list_classes of another size than cells. */
+  std::vector<std::uint32_t> addRegions(const std::vector<std::vector<CellId>>& cells,
+                                        const std::vector<FeatureClass>& list_classes);
+
 private:
   ComponentSet cores_;
   std::vector<std::uint32_t> labels_;

@@ -1,0 +1,40 @@
+#pragma once
+
+#include <visfeat/core/graph/topology_graph.h>
+
+#include <cstddef>
+#include <string>
+
+namespace visfeat {
+
+/** \brief Where a topology graph departs from that of a closed B-rep (every edge
+ * between two faces and ending at a corner at each end or closing on itself, every
+ * region touching another).
+ *
+ * On the clouds of a closed part these gaps mean features the segmentation did not
+ * separate (closer than about 2 min_radius cells): an edge that stops short of its
+ * corner, a corner that was never made, a narrow face swallowed by its neighbours. A
+ * scan's border (an open surface) leaves edges without their outer corner too. */
+struct GraphGaps
+{
+  std::size_t edges = 0;         // edge regions in all
+  std::size_t one_corner = 0;    // edges touching exactly one vertex
+  std::size_t no_corner = 0;     // edges touching none (a closed loop needs none)
+  std::size_t not_two_faces = 0; // edges touching fewer or more than two faces
+  std::size_t lone_regions = 0;  // regions touching no other (with other regions)
+
+  /** \brief Whether a gap that a closed part never has is there: an edge with one
+   * corner or not between two faces, or a lone region (edges without any corner are
+   * left out: a circular rim is one). */
+  bool any() const { return one_corner > 0 || not_two_faces > 0 || lone_regions > 0; }
+
+  /** \brief One line for the user, e.g. "11 of 28 edges end at a corner on one side
+   * only, 2 do not lie between two faces, 1 region touches no other"; empty when
+   * !any(). */
+  std::string describe() const;
+};
+
+/** \brief The gaps of a graph (GraphGaps). */
+GraphGaps findGraphGaps(const TopologyGraph& graph);
+
+} // namespace visfeat

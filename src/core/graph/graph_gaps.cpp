@@ -1,0 +1,50 @@
+#include <visfeat/core/graph/graph_gaps.h>
+
+#include <sstream>
+#include <vector>
+
+namespace visfeat {
+
+GraphGaps
+findGraphGaps(const TopologyGraph& graph)
+{
+  GraphGaps gaps;
+  for (std::uint32_t id = 1; id <= graph.size(); ++id) {
+    if (graph.size() > 1 && graph.neighbours(id).empty())
+      ++gaps.lone_regions;
+    if (graph.node(id).feature_class != FeatureClass::kEdge)
+      continue;
+    ++gaps.edges;
+    const std::size_t corners = graph.verticesOfEdge(id).size();
+    gaps.one_corner += corners == 1 ? 1 : 0;
+    gaps.no_corner += corners == 0 ? 1 : 0;
+    gaps.not_two_faces += graph.facesOfEdge(id).size() != 2 ? 1 : 0;
+  }
+  return gaps;
+}
+
+std::string
+GraphGaps::describe() const
+{
+  if (!any())
+    return "";
+  std::ostringstream out;
+  const char* sep = "";
+  if (one_corner > 0) {
+    out << one_corner << " of " << edges << " edges end at a corner on one side only";
+    if (no_corner > 0)
+      out << " (" << no_corner << " at neither)";
+    sep = ", ";
+  }
+  if (not_two_faces > 0) {
+    out << sep << not_two_faces << (not_two_faces == 1 ? " edge does" : " edges do")
+        << " not lie between two faces";
+    sep = ", ";
+  }
+  if (lone_regions > 0)
+    out << sep << lone_regions
+        << (lone_regions == 1 ? " region touches" : " regions touch") << " no other";
+  return out.str();
+}
+
+} // namespace visfeat

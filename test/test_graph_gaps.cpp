@@ -1,0 +1,123 @@
+// findGraphGaps(): where a topology graph departs from that of a closed part. A box's
+// surface labelled by its faces, edges and corners has none; the same box with one
+// corner relabelled as face, or a face cut off from the rest, has them.
+
+#include "band_fixtures.h"
+
+#include <visfeat/core/graph/graph_gaps.h>
+#include <visfeat/core/graph/topology_graph.h>
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace {
+
+using visfeat::CellCoord;
+using visfeat::CellId;
+using visfeat::FeatureClass;
+using visfeat::GraphGaps;
+using visfeat::TopologyGraph;
+using visfeat::VoxelBand;
+
+/** The surface of a box of cells, labelled by which of its coordinates lie on the
+ * box's extremes: one a face, two an edge, three a corner (8 / 12 / 6 regions). */
+struct LabelledBox
+{
+  VoxelBand band;
+  std::vector<std::uint32_t> labels;
+  std::vector<FeatureClass> classes;
+  std::map<std::array<int, 3>, std::uint32_t> ids; // extremes signature -> label
+
+  LabelledBox()
+  {
+    const visfeat_test::CellBand box = visfeat_test::hollowBox(10, 8, 5);
+    VoxelBand::Options options;
+    options.repair = false;
+    band = VoxelBand::fromCells(box.grid, box.cells, options);
+    const Eigen::Vector3i lo(2, 3, 2), hi(12, 11, 7);
+    labels.resize(band.size());
+    for (std::size_t i = 0; i < band.size(); ++i) {
+      const CellCoord& c = band.coord(static_cast<CellId>(i));
+      std::array<int, 3> sig{};
+      int extremes = 0;
+      for (int a = 0; a < 3; ++a) {
+        sig[static_cast<std::size_t>(a)] = c[a] == lo[a] ? -1 : c[a] == hi[a] ? 1 : 0;
+        extremes += sig[static_cast<std::size_t>(a)] != 0 ? 1 : 0;
+      }
+      auto it = ids.find(sig);
+      if (it == ids.end()) {
+        it = ids.emplace(sig, static_cast<std::uint32_t>(classes.size() + 1)).first;
+        classes.push_back(extremes == 1   ? FeatureClass::kFace
+                          : extremes == 2 ? FeatureClass::kEdge
+                                          : FeatureClass::kVertex);
+      }
+      labels[i] = it->second;
+    }
+  }
+
+  TopologyGraph graph() const
+  {
+    return TopologyGraph::build(band, labels, classes,
+                                visfeat::TopologyGraphParameters());
+  }
+};
+
+TEST(GraphGaps, AClosedBoxHasNone)
+{
+  const LabelledBox box;
+  const GraphGaps gaps = visfeat::findGraphGaps(box.graph());
+  EXPECT_EQ(gaps.edges, 12u);
+  EXPECT_EQ(gaps.one_corner, 0u);
+  EXPECT_EQ(gaps.no_corner, 0u);
+  EXPECT_EQ(gaps.not_two_faces, 0u);
+  EXPECT_EQ(gaps.lone_regions, 0u);
+  EXPECT_FALSE(gaps.any());
+  EXPECT_EQ(gaps.describe(), "");
+}
+
+TEST(GraphGaps, AMissingCornerLeavesThreeEdgesWithOneCorner)
+{
+  LabelledBox box;
+  // the corner at the low extremes becomes part of the face x = lo
+  const std::uint32_t corner = box.ids.at({-1, -1, -1});
+  const std::uint32_t face = box.ids.at({-1, 0, 0});
+  for (std::uint32_t& l : box.labels)
+    if (l == corner)
+      l = face;
+  box.classes[corner - 1] = FeatureClass::kFace; // no cells left: a lone region
+  const GraphGaps gaps = visfeat::findGraphGaps(box.graph());
+  EXPECT_EQ(gaps.one_corner, 3u);
+  EXPECT_EQ(gaps.no_corner, 0u);
+  EXPECT_EQ(gaps.not_two_faces, 0u);
+  EXPECT_EQ(gaps.lone_regions, 1u);
+  EXPECT_TRUE(gaps.any());
+  EXPECT_EQ(gaps.describe(), "3 of 12 edges end at a corner on one side only, 1 region "
+                             "touches no other");
+}
+
+TEST(GraphGaps, EdgesWithoutCornersAloneAreNoGap)
+{
+  // a cylinder's rims are closed loops without corners
+  GraphGaps loops;
+  loops.edges = 2;
+  loops.no_corner = 2;
+  EXPECT_FALSE(loops.any());
+  EXPECT_EQ(loops.describe(), "");
+  GraphGaps all = loops;
+  all.edges = 28;
+  all.one_corner = 11;
+  all.no_corner = 8;
+  all.not_two_faces = 1;
+  all.lone_regions = 2;
+  EXPECT_TRUE(all.any());
+  EXPECT_EQ(all.describe(),
+            "11 of 28 edges end at a corner on one side only (8 at "
+            "neither), 1 edge does not lie between two faces, 2 regions "
+            "touch no other");
+}
+
+} // namespace
