@@ -212,6 +212,35 @@ hollowBox(int sx, int sy, int sz)
   return band;
 }
 
+BoxRegions
+hollowBoxRegions(const visfeat::VoxelBand& band, int sx, int sy, int sz)
+{
+  const CellCoord lo(2, 3, 2), hi = lo + CellCoord(sx, sy, sz);
+  BoxRegions box;
+  box.labels.resize(band.size());
+  for (std::size_t i = 0; i < band.size(); ++i) {
+    const CellCoord& c = band.coord(static_cast<visfeat::CellId>(i));
+    std::array<int, 3> sig{};
+    int extremes = 0;
+    for (int a = 0; a < 3; ++a) {
+      sig[static_cast<std::size_t>(a)] = c[a] == lo[a] ? -1 : c[a] == hi[a] ? 1 : 0;
+      extremes += sig[static_cast<std::size_t>(a)] != 0 ? 1 : 0;
+    }
+    if (extremes == 0)
+      throw std::runtime_error("hollowBoxRegions: a cell inside the box");
+    auto it = box.ids.find(sig);
+    if (it == box.ids.end()) {
+      it =
+        box.ids.emplace(sig, static_cast<std::uint32_t>(box.classes.size() + 1)).first;
+      box.classes.push_back(extremes == 1   ? visfeat::FeatureClass::kFace
+                            : extremes == 2 ? visfeat::FeatureClass::kEdge
+                                            : visfeat::FeatureClass::kVertex);
+    }
+    box.labels[i] = it->second;
+  }
+  return box;
+}
+
 ThinPlate
 thinPlate(std::uint64_t seed, double half_size)
 {

@@ -4,6 +4,7 @@
 
 #include <support/cad_models.h>
 #include <visfeat/core/band/voxel_band.h>
+#include <visfeat/core/common/feature_class.h>
 #include <visfeat/core/grid/grid_spec.h>
 
 #include <pcl/point_cloud.h>
@@ -11,7 +12,9 @@
 
 #include <Eigen/Core>
 
+#include <array>
 #include <cstdint>
+#include <map>
 #include <random>
 #include <string>
 #include <vector>
@@ -56,6 +59,22 @@ CellBand creaseBand(std::uint64_t seed, double half_length = 6.0, double width =
  * [2, 2 + sx] x [3, 3 + sy] x [2, 2 + sz]: segments run along subcell faces and edges,
  * walls sz apart hide each other with a blocked length of exactly sz - 2 cell edges. */
 CellBand hollowBox(int sx = 10, int sy = 8, int sz = 5);
+
+/** \brief The B-rep regions of a hollowBox() band: per cell, the label of the box's
+ * face, edge or corner it lies on, by which of its coordinates lie on the box's
+ * extremes lo / hi (one: a face, two: an edge, three: a corner), labels numbered in
+ * the order of the cells. */
+struct BoxRegions
+{
+  std::vector<std::uint32_t> labels;               // per band cell
+  std::vector<visfeat::FeatureClass> classes;      // per label - 1
+  std::map<std::array<int, 3>, std::uint32_t> ids; // -1 / 0 / 1 per axis -> label
+};
+
+/** \brief BoxRegions of a band made from hollowBox(sx, sy, sz)'s cells.
+ * \throws std::runtime_error for a cell inside the box. */
+BoxRegions
+hollowBoxRegions(const visfeat::VoxelBand& band, int sx = 10, int sy = 8, int sz = 5);
 
 /** \brief A closed thin plate (rectangular box surface, rotated). The two large faces
  * are `gap` cells apart, with gap = 2 (thickness + |w|_1) + 1.25 so that a slab of

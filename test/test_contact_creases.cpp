@@ -34,24 +34,12 @@ struct Crease
   std::vector<FeatureClass> classes{FeatureClass::kFace, FeatureClass::kFace};
 };
 
-Crease
-creaseOfTwoPlanes(double turn, double length = 40.0)
+/** c.band from the cells of c.points (no repair), and c.cell_labels: each cell the
+ * label most of its points have (the smallest among equals). */
+void
+bandOfPoints(Crease& c, const visfeat::GridSpec& grid)
 {
-  Crease c;
-  visfeat::GridSpec grid;
-  grid.dims = CellCoord(64, static_cast<int>(length) + 8, 64);
-  grid.cell_size = 1.0;
-  grid.origin = Eigen::Vector3d(-32.5, -4.0, -32.5); // x = 0, z = 0: cell centres
-  const double t = turn * kPi / 180.0;
-  const Eigen::Vector3d up(-std::cos(t), 0.0, std::sin(t)); // B's direction away
   std::vector<CellCoord> cells;
-  for (double y = 0.125; y < length; y += 0.25)
-    for (double s = 0.125; s < 20.0; s += 0.25) {
-      c.points.emplace_back(-s, y, 0.0); // A
-      c.labels.push_back(1);
-      c.points.push_back(Eigen::Vector3d(0.0, y, 0.0) + s * up); // B
-      c.labels.push_back(s <= 1.5 ? 1 : 2);
-    }
   for (const Eigen::Vector3d& p : c.points)
     cells.push_back(grid.cellOf(p));
   const auto before = [](const CellCoord& a, const CellCoord& b) {
@@ -62,14 +50,35 @@ creaseOfTwoPlanes(double turn, double length = 40.0)
   visfeat::VoxelBand::Options options;
   options.repair = false;
   c.band = visfeat::VoxelBand::fromCells(grid, cells, options);
-  // a cell takes the label of most of its points
-  std::vector<std::array<int, 3>> votes(c.band.size(), {0, 0, 0});
+  std::vector<std::vector<int>> votes(c.band.size(),
+                                      std::vector<int>(c.classes.size() + 1, 0));
   for (std::size_t i = 0; i < c.points.size(); ++i)
     ++votes[static_cast<std::size_t>(c.band.find(grid.cellOf(c.points[i])))]
            [c.labels[i]];
   c.cell_labels.resize(c.band.size());
   for (std::size_t k = 0; k < votes.size(); ++k)
-    c.cell_labels[k] = votes[k][2] > votes[k][1] ? 2u : 1u;
+    c.cell_labels[k] = static_cast<std::uint32_t>(
+      std::max_element(votes[k].begin() + 1, votes[k].end()) - votes[k].begin());
+}
+
+Crease
+creaseOfTwoPlanes(double turn, double length = 40.0)
+{
+  Crease c;
+  visfeat::GridSpec grid;
+  grid.dims = CellCoord(64, static_cast<int>(length) + 8, 64);
+  grid.cell_size = 1.0;
+  grid.origin = Eigen::Vector3d(-32.5, -4.0, -32.5); // x = 0, z = 0: cell centres
+  const double t = turn * kPi / 180.0;
+  const Eigen::Vector3d up(-std::cos(t), 0.0, std::sin(t)); // B's direction away
+  for (double y = 0.125; y < length; y += 0.25)
+    for (double s = 0.125; s < 20.0; s += 0.25) {
+      c.points.emplace_back(-s, y, 0.0); // A
+      c.labels.push_back(1);
+      c.points.push_back(Eigen::Vector3d(0.0, y, 0.0) + s * up); // B
+      c.labels.push_back(s <= 1.5 ? 1 : 2);
+    }
+  bandOfPoints(c, grid);
   return c;
 }
 
@@ -166,25 +175,7 @@ cornerOfThreePlanes(double size)
       c.points.emplace_back(v, 0.0, u); // label 3: y = 0
       c.labels.push_back(3);
     }
-  std::vector<CellCoord> cells;
-  for (const Eigen::Vector3d& p : c.points)
-    cells.push_back(grid.cellOf(p));
-  const auto before = [](const CellCoord& a, const CellCoord& b) {
-    return std::lexicographical_compare(a.data(), a.data() + 3, b.data(), b.data() + 3);
-  };
-  std::sort(cells.begin(), cells.end(), before);
-  cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
-  visfeat::VoxelBand::Options options;
-  options.repair = false;
-  c.band = visfeat::VoxelBand::fromCells(grid, cells, options);
-  std::vector<std::array<int, 4>> votes(c.band.size(), {0, 0, 0, 0});
-  for (std::size_t i = 0; i < c.points.size(); ++i)
-    ++votes[static_cast<std::size_t>(c.band.find(grid.cellOf(c.points[i])))]
-           [c.labels[i]];
-  c.cell_labels.resize(c.band.size());
-  for (std::size_t k = 0; k < votes.size(); ++k)
-    c.cell_labels[k] = static_cast<std::uint32_t>(
-      std::max_element(votes[k].begin() + 1, votes[k].end()) - votes[k].begin());
+  bandOfPoints(c, grid);
   return c;
 }
 

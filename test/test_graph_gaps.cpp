@@ -12,6 +12,7 @@
 #include <array>
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -23,8 +24,7 @@ using visfeat::GraphGaps;
 using visfeat::TopologyGraph;
 using visfeat::VoxelBand;
 
-/** The surface of a box of cells, labelled by which of its coordinates lie on the
- * box's extremes: one a face, two an edge, three a corner (8 / 12 / 6 regions). */
+/** A hollowBox() band with its faces, edges and corners (8 / 12 / 6 regions). */
 struct LabelledBox
 {
   VoxelBand band;
@@ -38,25 +38,10 @@ struct LabelledBox
     VoxelBand::Options options;
     options.repair = false;
     band = VoxelBand::fromCells(box.grid, box.cells, options);
-    const Eigen::Vector3i lo(2, 3, 2), hi(12, 11, 7);
-    labels.resize(band.size());
-    for (std::size_t i = 0; i < band.size(); ++i) {
-      const CellCoord& c = band.coord(static_cast<CellId>(i));
-      std::array<int, 3> sig{};
-      int extremes = 0;
-      for (int a = 0; a < 3; ++a) {
-        sig[static_cast<std::size_t>(a)] = c[a] == lo[a] ? -1 : c[a] == hi[a] ? 1 : 0;
-        extremes += sig[static_cast<std::size_t>(a)] != 0 ? 1 : 0;
-      }
-      auto it = ids.find(sig);
-      if (it == ids.end()) {
-        it = ids.emplace(sig, static_cast<std::uint32_t>(classes.size() + 1)).first;
-        classes.push_back(extremes == 1   ? FeatureClass::kFace
-                          : extremes == 2 ? FeatureClass::kEdge
-                                          : FeatureClass::kVertex);
-      }
-      labels[i] = it->second;
-    }
+    visfeat_test::BoxRegions regions = visfeat_test::hollowBoxRegions(band, 10, 8, 5);
+    labels = std::move(regions.labels);
+    classes = std::move(regions.classes);
+    ids = std::move(regions.ids);
   }
 
   TopologyGraph graph() const

@@ -373,26 +373,9 @@ TEST(TopologyGraph, HollowBoxTopology)
   VoxelBand::Options options;
   options.repair = false;
   const VoxelBand band = VoxelBand::fromCells(box.grid, box.cells, options);
-  const Eigen::Vector3i lo(2, 3, 2), hi(12, 11, 7);
-  std::map<std::array<int, 3>, std::uint32_t> ids; // extremes signature -> label
-  std::vector<FeatureClass> classes;
-  std::vector<std::uint32_t> labels(band.size());
-  for (std::size_t i = 0; i < band.size(); ++i) {
-    const CellCoord& c = band.coord(static_cast<CellId>(i));
-    std::array<int, 3> sig{};
-    int extremes = 0;
-    for (int a = 0; a < 3; ++a) {
-      sig[static_cast<std::size_t>(a)] = c[a] == lo[a] ? -1 : c[a] == hi[a] ? 1 : 0;
-      extremes += sig[static_cast<std::size_t>(a)] != 0 ? 1 : 0;
-    }
-    ASSERT_GE(extremes, 1) << "cell inside the box";
-    auto it = ids.find(sig);
-    if (it == ids.end()) {
-      it = ids.emplace(sig, static_cast<std::uint32_t>(classes.size() + 1)).first;
-      classes.push_back(extremes == 1 ? kF : extremes == 2 ? kE : kV);
-    }
-    labels[i] = it->second;
-  }
+  const visfeat_test::BoxRegions regions = visfeat_test::hollowBoxRegions(band);
+  const std::vector<std::uint32_t>& labels = regions.labels;
+  const std::vector<FeatureClass>& classes = regions.classes;
   ASSERT_EQ(classes.size(), 26u);
 
   const TopologyGraph g1 = buildGraph(band, labels, classes, 1);
