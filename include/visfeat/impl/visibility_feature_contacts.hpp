@@ -1,16 +1,13 @@
 // VisibilityFeatureEstimation (not for inclusion on its own): edges along the creases
-// where two faces touch without an edge region between them, and the check of the
-// graph they complete.
+// where two faces touch without an edge region between them.
 #pragma once
 
 #include <visfeat/core/graph/contact_creases.h>
-#include <visfeat/core/graph/graph_gaps.h>
 #include <visfeat/impl/visibility_feature_estimation.hpp>
 
 #include <array>
 #include <cmath>
 #include <set>
-#include <sstream>
 #include <vector>
 
 namespace visfeat {
@@ -117,30 +114,6 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::addContactCreases(
         break;
       }
     }
-}
-
-template <typename PointInT, typename PointOutT>
-void
-VisibilityFeatureEstimation<PointInT, PointOutT>::checkGraph(const Results& results,
-                                                             Run& run) const
-{
-  // a one-view depth image is an open surface: its edges end at its border
-  if (run.segmentation.raw || !run.segmentation.complete_regions ||
-      run.fill == SurfaceFill::kOrganized ||
-      !run.warnings.empty()) // a warning of the band or the map says more
-    return;
-  const GraphGaps gaps = findGraphGaps(results.graph);
-  if (!gaps.any())
-    return;
-  const int min_radius = run.segmentation.components.min_radius;
-  std::ostringstream w;
-  w << "the graph is not that of a closed part: " << gaps.describe()
-    << ". Features closer than about " << 2 * min_radius << " cells (2 min_radius) at "
-    << "resolution " << run.resolution.resolution
-    << " were not all separated: read the graph as approximate, or raise the "
-       "resolution (the border of an open scan also leaves edges without their outer "
-       "corner)";
-  run.warnings.push_back(w.str());
 }
 
 } // namespace visfeat

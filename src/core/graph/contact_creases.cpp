@@ -277,44 +277,39 @@ locateContactCreases(const VoxelBand& band,
         }
       }
     });
-  struct Placed
-  {
-    std::vector<double> turns;
-    std::vector<CellId> cells;
-    std::vector<const Sample*> samples;
-  };
-  std::map<std::array<std::uint32_t, 2>, Placed> placed;
-  for (std::vector<Sample>& samples : chunk_samples)
-    for (Sample& sample : samples) {
-      Placed& crease = placed[sample.pair];
-      crease.turns.push_back(sample.turn);
-      crease.cells.insert(crease.cells.end(), sample.cells.begin(), sample.cells.end());
-      crease.samples.push_back(&sample);
-    }
-  for (auto& [pair, crease] : placed) {
-    if (crease.turns.size() < kMinContactCreaseSamples)
+  // per pair of faces, its samples in cell order
+  std::map<std::array<std::uint32_t, 2>, std::vector<const Sample*>> placed;
+  for (const std::vector<Sample>& samples : chunk_samples)
+    for (const Sample& sample : samples)
+      placed[sample.pair].push_back(&sample);
+  for (const auto& [pair, samples] : placed) {
+    if (samples.size() < kMinContactCreaseSamples)
       continue; // a few cells near a corner are no crease
     ContactCrease result;
     result.faces = pair;
-    std::nth_element(crease.turns.begin(),
-                     crease.turns.begin() +
-                       static_cast<std::ptrdiff_t>(crease.turns.size() / 2),
-                     crease.turns.end());
-    result.degrees = crease.turns[crease.turns.size() / 2];
-    result.samples = static_cast<std::uint32_t>(crease.turns.size());
-    for (const CreaseEnd& end : creaseEnds(crease.samples)) {
+    std::vector<double> turns;
+    std::vector<CellId> cells;
+    for (const Sample* sample : samples) {
+      turns.push_back(sample->turn);
+      cells.insert(cells.end(), sample->cells.begin(), sample->cells.end());
+    }
+    std::nth_element(turns.begin(),
+                     turns.begin() + static_cast<std::ptrdiff_t>(turns.size() / 2),
+                     turns.end());
+    result.degrees = turns[turns.size() / 2];
+    result.samples = static_cast<std::uint32_t>(turns.size());
+    for (const CreaseEnd& end : creaseEnds(samples)) {
       const Extension more =
         extendToFeature(band, cell_labels, classes, pair, end.at, end.line, end.outward,
                         half_width, extension_length);
-      crease.cells.insert(crease.cells.end(), more.cells.begin(), more.cells.end());
+      cells.insert(cells.end(), more.cells.begin(), more.cells.end());
       if (more.outcome == Extension::kMetEdge || more.outcome == Extension::kLeftFaces)
         result.open_ends.push_back(
           {more.at, end.outward, more.outcome == Extension::kMetEdge});
     }
-    std::sort(crease.cells.begin(), crease.cells.end());
-    crease.cells.erase(std::unique(crease.cells.begin(), crease.cells.end()),
-                       crease.cells.end());
-    result.cells = std::move(crease.cells);
+    std::sort(cells.begin(), cells.end());
+    cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
+    result.cells = std::move(cells);
     creases.push_back(std::move(result));
   }
   return creases;

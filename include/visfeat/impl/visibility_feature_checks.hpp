@@ -1,0 +1,137 @@
+// VisibilityFeatureEstimation (not for inclusion on its own): the checks that say when
+// a result cannot be trusted, and why (the band, the map, the noise, the graph).
+#pragma once
+
+#include <visfeat/core/band/band_pieces.h>
+#include <visfeat/core/graph/graph_gaps.h>
+#include <visfeat/impl/visibility_feature_estimation.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+#include <string>
+
+namespace visfeat {
+
+template <typename PointInT, typename PointOutT>
+void
+VisibilityFeatureEstimation<PointInT, PointOutT>::checkResults(const Results& results,
+                                                               Run& run) const
+{
+  const VoxelBand& band = results.band;
+  const int min_radius = run.segmentation.components.min_radius;
+  std::size_t cores = 0;
+  for (std::size_t c = 0; c < band.size(); ++c)
+    if (results.map.radius(static_cast<CellId>(c)) >= min_radius)
+      ++cores;
+  std::size_t faces = 0;
+  for (const Region& region : results.segmentation.regions())
+    if (region.feature_class == FeatureClass::kFace)
+      ++faces;
+  const int resolution = run.resolution.resolution;
+  const double core_share = band.empty() ? 0.0 : double(cores) / double(band.size());
+  const double repair_share =
+    band.empty() ? 0.0 : double(band.repairCellCount()) / double(band.size());
+  // a band in pieces: the points are sparser than the cells
+  std::size_t largest_piece = 0;
+  for (const std::uint32_t size : bandPieceSizes(band))
+    largest_piece = std::max<std::size_t>(largest_piece, size);
+  std::ostringstream w;
+  if (double(largest_piece) < kMinLargestPieceShare * double(band.size())) {
+    w << "the band falls apart: its largest 6-connected piece holds " << largest_piece
+      << " of " << band.size() << " cells (the points are sparser than the cells at "
+      << "resolution " << resolution << "); "
+      << (run.fill == SurfaceFill::kPoints
+            ? "fill the band between the points (fill 'triangles') or lower the "
+              "resolution"
+            : "lower the resolution");
+    run.warnings.push_back(w.str());
+  } else if (results.segmentation.regions().empty() || faces == 0) {
+    w << (faces == 0 && !results.segmentation.regions().empty() ? "no face found"
+                                                                : "no region found")
+      << ": " << cores << " of " << band.size() << " band cells reach min_radius "
+      << min_radius << " rings (a face core needs them); the features lie closer than "
+      << 2 * min_radius << " cells at resolution " << resolution
+      << " or the band is broken: raise the resolution";
+    if (run.fill == SurfaceFill::kPoints && run.resolution.spacing > 0.0)
+      w << " and fill the band between the points (fill 'triangles')";
+    w << ", or lower min_radius";
+    if (!noise_mode_)
+      w << kNoisyScanAdvice;
+    run.warnings.push_back(w.str());
+  } else if (core_share < kMinCoreShare) {
+    w << "only " << std::round(1000.0 * core_share) / 10.0
+      << "% of the band's cells reach"
+      << " min_radius " << min_radius << " rings: most of the surface lies within "
+      << min_radius << " cells of a feature at resolution " << resolution
+      << ", so small faces and close edges merge or vanish; raise the resolution";
+    if (!noise_mode_)
+      w << kNoisyScanAdvice;
+    run.warnings.push_back(w.str());
+  }
+  if (!noise_mode_ && band.roughness() > kNoisyRoughness) {
+    const int calmer = detail::calmerResolution(resolution, band.roughness());
+    std::ostringstream r;
+    r << "the points scatter about the surface: roughness "
+      << std::round(1000.0 * band.roughness()) / 1000.0
+      << " cells (RMS distance of the cells' point centroids to local planes; clean "
+         "clouds give about 0, and counts break from about 0.15): the result may be "
+         "wrong; use noise mode (setNoiseMode(true)) or a resolution of "
+      << calmer << " or lower";
+    run.warnings.push_back(r.str());
+  }
+  if (run.point_noise > kNoisyPointNoise) {
+    const int calmer = detail::calmerResolution(resolution, run.point_noise);
+    std::ostringstream r;
+    r << "the points scatter about their local planes: noise "
+      << std::round(1000.0 * run.point_noise) / 1000.0
+      << " cells (RMS about the planes fitted to each point's neighbours; clean clouds "
+         "give about 0, and counts break from about 0.17): the band filled between the "
+         "points is as rough, and the result may be wrong; smooth the points first "
+         "(pcl::MovingLeastSquares), sample denser, or use a resolution of "
+      << calmer << " or lower with the fill 'triangles' (setSurfaceFill()), where "
+      << "features need to lie about " << std::setprecision(3)
+      << 2 * min_radius * run.grid.cell_size * resolution / calmer
+      << " apart (world units)";
+    run.warnings.insert(run.warnings.begin(), r.str()); // the cause of the others
+  }
+  if (repair_share > kMaxRepairShare) {
+    std::ostringstream r;
+    r << "the band has holes: " << band.repairCellCount() << " of " << band.size()
+      << " cells were added to close it (the points are sparser than the cells)";
+    if (run.fill == SurfaceFill::kPoints)
+      r << "; fill the band between the points (fill 'triangles') or lower the "
+           "resolution";
+    else
+      r << "; lower the resolution";
+    run.warnings.push_back(r.str());
+  }
+  checkGraph(results, run);
+}
+
+template <typename PointInT, typename PointOutT>
+void
+VisibilityFeatureEstimation<PointInT, PointOutT>::checkGraph(const Results& results,
+                                                             Run& run) const
+{
+  // a one-view depth image is an open surface: its edges end at its border
+  if (run.segmentation.raw || !run.segmentation.complete_regions ||
+      run.fill == SurfaceFill::kOrganized ||
+      !run.warnings.empty()) // a warning of the band or the map says more
+    return;
+  const GraphGaps gaps = findGraphGaps(results.graph);
+  if (!gaps.any())
+    return;
+  const int min_radius = run.segmentation.components.min_radius;
+  std::ostringstream w;
+  w << "the graph is not that of a closed part: " << gaps.describe()
+    << ". Features closer than about " << 2 * min_radius << " cells (2 min_radius) at "
+    << "resolution " << run.resolution.resolution
+    << " were not all separated: read the graph as approximate, or raise the "
+       "resolution (the border of an open scan also leaves edges without their outer "
+       "corner)";
+  run.warnings.push_back(w.str());
+}
+
+} // namespace visfeat
