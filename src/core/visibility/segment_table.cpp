@@ -63,13 +63,13 @@ SegmentTable::SegmentTable(int max_distance)
       folds_[f][b] = foldOf(f, b);
 
   const int w = 2 * max_distance + 1;
-  row_start_.assign(static_cast<std::size_t>(w) * w, 0);
+  row_centre_ = max_distance + w * max_distance;
+  row_middle_.assign(static_cast<std::size_t>(w) * w, 0);
   std::int32_t stored = 0;
   for (int z = -max_distance; z <= max_distance; ++z)
     for (int y = -max_distance; y <= max_distance; ++y) {
       const int half = max_distance - std::abs(y) - std::abs(z);
-      row_start_[static_cast<std::size_t>((y + max_distance) +
-                                          w * (z + max_distance))] = stored;
+      row_middle_[static_cast<std::size_t>(y + w * z + row_centre_)] = stored + half;
       if (half >= 0)
         stored += 2 * half + 1;
     }
@@ -147,6 +147,8 @@ SegmentTable::addOffset(const Eigen::Vector3i& d, std::int32_t side)
   check_span.count = static_cast<std::uint16_t>(cells.size());
   for (const auto& [offset, mask] : cells)
     checks_.push_back(pack(offset, mask));
+  checks_.resize(static_cast<std::size_t>(check_span.begin) + paddedCount(cells.size()),
+                 pack(0, 0)); // the source cell, no subcell: always passes
 }
 
 bool

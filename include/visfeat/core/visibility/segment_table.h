@@ -23,7 +23,13 @@ namespace visfeat {
  * has a zero coordinate the segment runs along subcell faces (one zero) or edges (two
  * zeros), and a stretch is free when any of the 2 or 4 subcells around it is; such
  * cells are read through a fold (a 256-entry table) that ORs those subcells onto the
- * lowest one, so a check is always `(fold[byte] & mask) == mask`.
+ * lowest one, so a check is always `(fold[byte] & mask) == mask`. The checks are read
+ * kCheckBlock at a time, their misses ORed and tested once a block (each offset's list
+ * padded with checks that always pass: the source cell, mask 0): one branch a block
+ * instead of one a check: 2-6% off the map on the generated icosahedron at 256
+ * (2026-12-02, old and new library alternated: 1 thread 1.62-1.68 s -> 1.58-1.60 s,
+ * 2 threads 1.04-1.23 s -> 0.97-1.17 s); 8 checks a block measured as fast as 8-lane
+ * AVX2 gathers, so the test stays portable.
  * With an opacity: one check a stretch, `byte & subcells` zero when blocked, with its
  * length.
  *
@@ -59,14 +65,12 @@ public:
     if (opacity <= 0.0) {
       const CheckSpan& span = check_spans_[at];
       const std::int32_t* v = checks_.data() + span.begin;
-      const std::int32_t* end = v + span.count;
-      const std::uint8_t* fold = folds_[span.fold].data(); // fold 0: the identity
-      for (; v != end; ++v) {
-        const unsigned mask = static_cast<unsigned>(*v) & 0xFFu;
-        if ((fold[cells[*v >> 8]] & mask) != mask)
-          return false;
-      }
-      return true;
+      const std::int32_t* end = v + paddedCount(span.count);
+      if (span.fold == 0)
+        return passBlocks(cells, v, end, [](unsigned byte) { return byte; });
+      const std::uint8_t* fold = folds_[span.fold].data();
+      return passBlocks(cells, v, end,
+                        [fold](unsigned byte) { return unsigned{fold[byte]}; });
     }
     const StretchSpan& span = stretch_spans_[at];
     double blocked = 0.0;
@@ -85,6 +89,9 @@ public:
             const CellCoord& a,
             const CellCoord& b,
             double opacity) const;
+
+  /** \brief Checks the exact test reads at once (one branch a block). */
+  static constexpr int kCheckBlock = 8;
 
   /** \brief Cell checks of the exact test for offset d (for tests and benchmarks). */
   std::size_t checksFor(const Eigen::Vector3i& d) const;
@@ -108,25 +115,48 @@ private:
   };
 
   /** Only the offsets with |d|_1 <= max_distance are stored (an octahedron, ~1/6 of
-   * the cube of offsets, so the table stays in cache): row (dy, dz) starts at
-   * row_start_ and holds dx = -(max_distance - |dy| - |dz|) .. +(...). */
+   * the cube of offsets, so the table stays in cache): row (dy, dz) holds
+   * dx = -(max_distance - |dy| - |dz|) .. +(...), and row_middle_ gives the index of
+   * its dx = 0 (row (dy, dz) is dy + w dz + row_centre_, w = 2 max_distance + 1). */
   std::size_t spanIndex(const Eigen::Vector3i& d) const
   {
-    const int w = 2 * max_distance_ + 1;
-    const std::size_t row =
-      static_cast<std::size_t>((d.y() + max_distance_) + w * (d.z() + max_distance_));
-    const int half = max_distance_ - std::abs(d.y()) - std::abs(d.z());
-    return static_cast<std::size_t>(row_start_[row] + (d.x() + half));
+    const int row = d.y() + (2 * max_distance_ + 1) * d.z() + row_centre_;
+    return static_cast<std::size_t>(row_middle_[static_cast<std::size_t>(row)] + d.x());
   }
 
   void addOffset(const Eigen::Vector3i& d, std::int32_t side);
 
+  /** Checks [v, end) (a whole number of blocks) of a source's byte `cells`: false at
+   * the first block with a subcell of some mask not free after `read`. */
+  template <typename Read>
+  static bool passBlocks(const std::uint8_t* cells,
+                         const std::int32_t* v,
+                         const std::int32_t* end,
+                         Read read)
+  {
+    for (; v != end; v += kCheckBlock) {
+      unsigned missing = 0;
+      for (int i = 0; i < kCheckBlock; ++i)
+        missing |= static_cast<unsigned>(v[i]) & ~read(unsigned{cells[v[i] >> 8]});
+      if ((missing & 0xFFu) != 0)
+        return false;
+    }
+    return true;
+  }
+
+  static std::size_t paddedCount(std::size_t count)
+  {
+    return (count + kCheckBlock - 1) / kCheckBlock * kCheckBlock;
+  }
+
   int max_distance_ = 0;
   int window_bricks_ = 1;
-  std::vector<std::int32_t> row_start_;    // per (dy, dz), (2 max_distance + 1)^2
+  int row_centre_ = 0;                     // the row of (dy, dz) = (0, 0)
+  std::vector<std::int32_t> row_middle_;   // per (dy, dz), (2 max_distance + 1)^2
   std::vector<CheckSpan> check_spans_;     // per offset, spanIndex order
   std::vector<StretchSpan> stretch_spans_; // per offset, spanIndex order
-  /** (window offset << 8) | mask: the exact test's checks. */
+  /** (window offset << 8) | mask: the exact test's checks; each offset's list is
+   * padded to whole blocks (kCheckBlock) with pack(0, 0), which always passes. */
   std::vector<std::int32_t> checks_;
   /** (window offset << 8) | subcells: the stretches, for an opacity. */
   std::vector<std::int32_t> stretches_;
