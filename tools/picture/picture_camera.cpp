@@ -21,6 +21,17 @@ namespace {
 /** \brief The default direction the camera looks from (see chooseDirection()). */
 const Eigen::Vector3d kDefaultDirection = Eigen::Vector3d(1.0, 0.78, 0.62).normalized();
 
+/** \brief Face regions with fewer points do not steer the camera (specks). */
+constexpr double kMinFacePoints = 10.0;
+
+/** \brief A face region is planar when its points' smallest covariance eigenvalue is
+ * at most this fraction of the middle one. */
+constexpr double kPlanarEigenRatio = 0.01;
+
+/** \brief A face is seen from a direction when its outward normal lies within about
+ * 72 degrees of it (cosine 0.3): faces seen edge-on show little. */
+constexpr double kFacingCosine = 0.3;
+
 } // namespace
 
 Eigen::Vector3d
@@ -33,53 +44,86 @@ chooseDirection(const pcl::PointCloud<visfeat::PointVisibility>& cloud)
     Eigen::Matrix3d outer = Eigen::Matrix3d::Zero();
   };
   std::map<std::uint32_t, Moments> faces;
+  Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+  double finite = 0.0;
   for (const auto& p : cloud) {
-    if (p.feature_class != static_cast<std::uint8_t>(visfeat::FeatureClass::kFace) ||
-        !std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+      continue;
+    const Eigen::Vector3d q(p.x, p.y, p.z);
+    centroid += q;
+    finite += 1.0;
+    if (p.feature_class != static_cast<std::uint8_t>(visfeat::FeatureClass::kFace))
       continue;
     Moments& m = faces[p.label];
-    const Eigen::Vector3d q(p.x, p.y, p.z);
     m.n += 1.0;
     m.sum += q;
     m.outer += q * q.transpose();
   }
-  std::vector<std::pair<Eigen::Vector3d, double>> normals; // normal, weight
+  if (finite > 0.0)
+    centroid /= finite;
+  struct Face
+  {
+    Eigen::Vector3d normal; // outward: away from the object's centroid
+    double points = 0.0;
+    bool planar = false;
+  };
+  std::vector<Face> seen_faces;
   for (const auto& [label, m] : faces) {
     (void)label;
-    if (m.n < 10.0)
+    if (m.n < kMinFacePoints)
       continue;
     const Eigen::Vector3d mean = m.sum / m.n;
     const Eigen::Matrix3d cov = m.outer / m.n - mean * mean.transpose();
     const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(cov);
-    if (eig.info() != Eigen::Success ||
-        eig.eigenvalues()(0) > 0.01 * eig.eigenvalues()(1))
+    if (eig.info() != Eigen::Success)
       continue;
-    normals.emplace_back(eig.eigenvectors().col(0), m.n);
+    Face f;
+    f.normal = eig.eigenvectors().col(0);
+    if (f.normal.dot(mean - centroid) < 0.0)
+      f.normal = -f.normal;
+    f.points = m.n;
+    f.planar = eig.eigenvalues()(0) <= kPlanarEigenRatio * eig.eigenvalues()(1);
+    seen_faces.push_back(f);
   }
-  if (normals.empty())
+  if (std::none_of(seen_faces.begin(), seen_faces.end(),
+                   [](const Face& f) { return f.planar; }))
     return kDefaultDirection;
 
-  // Directions spread evenly over the sphere (a Fibonacci lattice).
+  // Directions spread evenly over the sphere (a Fibonacci lattice). A direction
+  // scores the faces it sees (outward normal within ~72 degrees of it), then the
+  // projected area of the planar ones facing it.
   constexpr int kCandidates = 2000;
   std::vector<Eigen::Vector3d> candidates;
-  std::vector<double> scores;
-  double best = 0.0;
+  std::vector<int> counts;
+  std::vector<double> areas;
+  int most = 0;
   for (int i = 0; i < kCandidates; ++i) {
     const double z = 1.0 - (2.0 * i + 1.0) / kCandidates;
     const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
     const double phi = i * M_PI * (3.0 - std::sqrt(5.0));
     const Eigen::Vector3d d(r * std::cos(phi), r * std::sin(phi), z);
-    double score = 0.0;
-    for (const auto& [n, w] : normals)
-      score += w * std::abs(n.dot(d));
+    int count = 0;
+    double area = 0.0;
+    for (const Face& f : seen_faces) {
+      const double facing = f.normal.dot(d);
+      count += facing > kFacingCosine;
+      if (f.planar && facing > 0.0)
+        area += f.points * facing;
+    }
     candidates.push_back(d);
-    scores.push_back(score);
-    best = std::max(best, score);
+    counts.push_back(count);
+    areas.push_back(area);
+    most = std::max(most, count);
   }
+  double best = 0.0;
+  for (std::size_t i = 0; i < candidates.size(); ++i)
+    if (counts[i] == most)
+      best = std::max(best, areas[i]);
   Eigen::Vector3d chosen = kDefaultDirection;
   double closest = -2.0;
   for (std::size_t i = 0; i < candidates.size(); ++i)
-    if (scores[i] >= 0.97 * best && candidates[i].dot(kDefaultDirection) > closest) {
+    if (counts[i] == most && areas[i] >= 0.97 * best &&
+        candidates[i].dot(kDefaultDirection) > closest) {
       closest = candidates[i].dot(kDefaultDirection);
       chosen = candidates[i];
     }

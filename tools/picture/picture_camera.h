@@ -13,17 +13,21 @@
 
 namespace visfeat_tools {
 
-/** \brief The direction to look from (towards the object): the one that shows the most
- * surface.
+/** \brief The direction to look from (from the object towards the camera): the one
+ * that shows the most faces, then the most planar surface.
  *
- * Each planar face region (its points' smallest covariance eigenvalue below 1% of the
- * middle one) contributes its point count times |normal . d|: for a convex object that
- * is its projected area, largest from a corner-like direction showing three faces at
- * once (an isometric view for a cube, tilted towards the big faces for a flat box).
- * Among the directions within 3% of the best, the one closest to the default wins
- * (deterministic, and never exactly along a diagonal). Without planar faces (raw mode,
- * smooth objects): the default, the bounding-box diagonal (1,1,1) tilted a little so
- * that opposite corners of a box do not project onto each other. Unit length. */
+ * Each face region's normal (its points' smallest covariance eigenvector) is turned
+ * outward, away from the centroid of all points (right for convex parts; a hole's
+ * walls come out inward). A direction sees the faces whose outward normal lies within
+ * about 72 degrees of it; among the directions that see the most faces, the planar
+ * ones facing it (smallest eigenvalue below 1% of the middle one) add their point
+ * count times the cosine (their projected area): a cube is seen from a corner, three
+ * faces at once, and a part with one large flat back and a detailed front (the
+ * fandisk) from the front. Among the directions within 3% of the best area, the one
+ * closest to the default wins (deterministic, and never exactly along a diagonal).
+ * Without a planar face (raw mode, smooth objects): the default, the bounding-box
+ * diagonal (1,1,1) tilted a little so that opposite corners of a box do not project
+ * onto each other. Unit length. */
 Eigen::Vector3d chooseDirection(const pcl::PointCloud<visfeat::PointVisibility>& cloud);
 
 /** \brief The camera: perspective, looking from `direction`; the longer axis of the
