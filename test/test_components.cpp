@@ -30,6 +30,7 @@ smallParameters()
   p.vertex_max_cells = 4;
   p.dimensionality = 3.0;
   p.face_min_depth = 3;
+  p.flat_core_faces = false; // the painted sheets are flat: see the FlatCores tests
   return p;
 }
 

@@ -256,6 +256,7 @@ configureEstimator(Estimator& estimator,
   estimator.setMinRadius(opt.min_radius);
   estimator.setVertexMaxCells(opt.vertex_cells);
   estimator.setNarrowFacePersistence(opt.narrow_persistence);
+  estimator.setFlatCoreFaces(opt.flat_cores);
   estimator.setDimensionality(opt.dimensionality);
   estimator.setMinCreaseAngle(opt.min_crease_angle);
   estimator.setRawMode(opt.raw);

@@ -39,8 +39,8 @@ const std::set<std::string>&
 switchOptions()
 {
   static const std::set<std::string> names{"-no_repair",  "-raw",         "-no_regions",
-                                           "-noise_mode", "-paper_noise", "-q",
-                                           "-h",          "--help"};
+                                           "-noise_mode", "-paper_noise", "-flat_cores",
+                                           "-q",          "-h",           "--help"};
   return names;
 }
 
@@ -109,6 +109,9 @@ printHelp(const char* program)
              "clean-up)\n");
   print_info("    -no_regions       = label the components' cores only, not every "
              "point\n");
+  print_info("    -flat_cores       = a core thinner than a face but flat across is "
+             "the middle of a face between two creases about 2 min_radius cells "
+             "apart, not an edge (default: off; see README, Thin face cores)\n");
   print_info("    -opacity D        = blocked length tolerated between two "
              "cells (default: ");
   print_value("%g", kDefaultOpacity);
@@ -249,6 +252,7 @@ readValues(const Arguments& args, Options& opt, std::string& error)
   opt.repair = !args.has("-no_repair");
   opt.raw = args.has("-raw");
   opt.regions = !args.has("-no_regions");
+  opt.flat_cores = args.has("-flat_cores");
   if (opt.max_radius != 0 && opt.min_radius > opt.max_radius) {
     error = "-min_radius " + std::to_string(opt.min_radius) + " exceeds -max_radius " +
             std::to_string(opt.max_radius) + ": components need radii up to min_radius";

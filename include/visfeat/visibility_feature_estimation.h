@@ -183,6 +183,20 @@ public:
     return segmentation_parameters_.components.narrow_face_persistence;
   }
 
+  /** \brief A core too thin for a face by its depth but flat across (the middle of a
+   * face about 2 min_radius cells wide between two creases) is a face
+   * (ComponentParameters::flat_core_faces, visfeat::flatCore(); issue 14). Default
+   * off (such cores are edges, by depth alone): it gains on some public meshes and
+   * loses on others, see ComponentParameters::flat_core_faces. */
+  inline void setFlatCoreFaces(bool on)
+  {
+    segmentation_parameters_.components.flat_core_faces = on;
+  }
+  inline bool getFlatCoreFaces() const
+  {
+    return segmentation_parameters_.components.flat_core_faces;
+  }
+
   /** \brief Raw mode's edge/face threshold on mean same-component 6-neighbours.
    * Default 3.5 (the paper's), range ComponentParameters::kDimensionalityRange. */
   inline void setDimensionality(double dimensionality)

@@ -1,5 +1,6 @@
 #include <visfeat/core/common/error.h>
 #include <visfeat/core/segmentation/components.h>
+#include <visfeat/core/segmentation/flat_cores.h>
 #include <visfeat/core/segmentation/narrow_faces.h>
 
 #include <algorithm>
@@ -84,6 +85,10 @@ ComponentSet::extract(const VoxelBand& band,
   set.labels_.assign(n, 0);
   std::vector<CellId> members;
   std::vector<std::uint32_t> depth(n, 0);
+  // thin cores that may be the middle of a face (flat_core_faces): label, a cell
+  std::vector<std::pair<std::uint32_t, CellId>> thin;
+  const std::size_t thin_min_cells = static_cast<std::size_t>(parameters.min_radius) *
+                                     static_cast<std::size_t>(parameters.min_radius);
   for (std::size_t seed = 0; seed < n; ++seed) {
     if (set.labels_[seed] != 0 || map.radii()[seed] < parameters.min_radius)
       continue;
@@ -104,16 +109,42 @@ ComponentSet::extract(const VoxelBand& band,
       component.feature_class = component.mean_neighbours < parameters.dimensionality
                                   ? FeatureClass::kEdge
                                   : FeatureClass::kFace;
-    else
-      component.feature_class =
-        component.depth >= static_cast<std::uint32_t>(parameters.face_min_depth)
-          ? FeatureClass::kFace
-          : FeatureClass::kEdge;
+    else if (component.depth >= static_cast<std::uint32_t>(parameters.face_min_depth))
+      component.feature_class = FeatureClass::kFace;
+    else {
+      component.feature_class = FeatureClass::kEdge;
+      if (parameters.flat_core_faces && members.size() >= thin_min_cells)
+        thin.emplace_back(label, static_cast<CellId>(seed));
+    }
     set.components_.push_back(component);
   }
+  if (!thin.empty())
+    set.findFlatCores(band, thin);
   if (!raw && parameters.narrow_face_persistence > 0)
     set.addNarrowFaceCores(band, map, parameters, depth);
   return set;
+}
+
+void
+ComponentSet::findFlatCores(const VoxelBand& band,
+                            const std::vector<std::pair<std::uint32_t, CellId>>& thin)
+{
+  std::vector<std::uint32_t> stamp(band.size(), 0);
+  std::uint32_t next_stamp = 0;
+  std::vector<CellId> members;
+  for (const auto& [label, seed] : thin) {
+    members.assign(1, seed);
+    stamp[static_cast<std::size_t>(seed)] = ++next_stamp;
+    for (std::size_t head = 0; head < members.size(); ++head)
+      for (const CellId nb : band.neighbours(members[head]))
+        if (nb != kNoCell && labels_[static_cast<std::size_t>(nb)] == label &&
+            stamp[static_cast<std::size_t>(nb)] != next_stamp) {
+          stamp[static_cast<std::size_t>(nb)] = next_stamp;
+          members.push_back(nb);
+        }
+    if (flatCore(band, members, stamp, next_stamp))
+      components_[label - 1].feature_class = FeatureClass::kFace;
+  }
 }
 
 void
