@@ -20,6 +20,29 @@ using detail::PlaneSums;
 
 namespace {
 
+/** The class of region `label` (classes[label - 1]; kNone for 0 or past the end). */
+FeatureClass
+classOfLabel(const std::vector<FeatureClass>& classes, std::uint32_t label)
+{
+  return label == 0 || label > classes.size() ? FeatureClass::kNone
+                                              : classes[label - 1];
+}
+
+/** Calls f(m) for each band cell m in the cube of cells within `reach` of cell `at`,
+ * in z, y, x order (the order the results depend on). */
+template <typename F>
+void
+forEachCellAround(const VoxelBand& band, const CellCoord& at, int reach, F&& f)
+{
+  for (int dz = -reach; dz <= reach; ++dz)
+    for (int dy = -reach; dy <= reach; ++dy)
+      for (int dx = -reach; dx <= reach; ++dx) {
+        const CellId m = band.find(at + CellCoord(dx, dy, dz));
+        if (m != kNoCell)
+          f(m);
+      }
+}
+
 /** The line where two fitted planes cross, relative to the sample point, and the turn
  * between them. */
 struct CreaseLine
@@ -143,26 +166,19 @@ extendToFeature(const VoxelBand& band,
     const CellCoord home = grid.cellOf(x);
     bool on_faces = false;
     FeatureClass met = FeatureClass::kNone;
-    for (int dz = -1; dz <= 1; ++dz)
-      for (int dy = -1; dy <= 1; ++dy)
-        for (int dx = -1; dx <= 1; ++dx) {
-          const CellId m = band.find(home + CellCoord(dx, dy, dz));
-          if (m == kNoCell)
-            continue;
-          const Eigen::Vector3d centre = grid.cellCenter(band.coord(m));
-          if (line.distance(centre - at) > half_width)
-            continue;
-          const std::uint32_t l = cell_labels[static_cast<std::size_t>(m)];
-          const FeatureClass c =
-            l == 0 || l > classes.size() ? FeatureClass::kNone : classes[l - 1];
-          if (l == pair[0] || l == pair[1]) {
-            on_faces = true;
-            extension.cells.push_back(m);
-          } else if (c == FeatureClass::kVertex ||
-                     (c == FeatureClass::kEdge && met != FeatureClass::kVertex)) {
-            met = c;
-          }
-        }
+    forEachCellAround(band, home, 1, [&](CellId m) {
+      if (line.distance(grid.cellCenter(band.coord(m)) - at) > half_width)
+        return;
+      const std::uint32_t l = cell_labels[static_cast<std::size_t>(m)];
+      const FeatureClass c = classOfLabel(classes, l);
+      if (l == pair[0] || l == pair[1]) {
+        on_faces = true;
+        extension.cells.push_back(m);
+      } else if (c == FeatureClass::kVertex ||
+                 (c == FeatureClass::kEdge && met != FeatureClass::kVertex)) {
+        met = c;
+      }
+    });
     if (met != FeatureClass::kNone) {
       extension.outcome =
         met == FeatureClass::kVertex ? Extension::kMetVertex : Extension::kMetEdge;
@@ -198,7 +214,7 @@ locateContactCreases(const VoxelBand& band,
       cell_labels.size() != band.size())
     return creases;
   const auto isFace = [&](std::uint32_t l) {
-    return l != 0 && l <= classes.size() && classes[l - 1] == FeatureClass::kFace;
+    return classOfLabel(classes, l) == FeatureClass::kFace;
   };
   const FacePointIndex index(points, labels, classes, radius);
   // samples only away from edges and vertices: near them the watershed spills across
@@ -261,17 +277,12 @@ locateContactCreases(const VoxelBand& band,
           sample.turn = line.turn;
           sample.at = at;
           sample.line = line;
-          for (int dz = -reach; dz <= reach; ++dz)
-            for (int dy = -reach; dy <= reach; ++dy)
-              for (int dx = -reach; dx <= reach; ++dx) {
-                const CellId m = band.find(at_cell + CellCoord(dx, dy, dz));
-                if (m == kNoCell)
-                  continue;
-                const std::uint32_t l = cell_labels[static_cast<std::size_t>(m)];
-                if ((l == a || l == b) &&
-                    line.distance(grid.cellCenter(band.coord(m)) - at) <= half_width)
-                  sample.cells.push_back(m);
-              }
+          forEachCellAround(band, at_cell, reach, [&](CellId m) {
+            const std::uint32_t l = cell_labels[static_cast<std::size_t>(m)];
+            if ((l == a || l == b) &&
+                line.distance(grid.cellCenter(band.coord(m)) - at) <= half_width)
+              sample.cells.push_back(m);
+          });
           out.push_back(std::move(sample));
           break;
         }
@@ -392,18 +403,12 @@ contactCorners(const VoxelBand& band,
     std::vector<CellId> cells;
     const CellCoord home = grid.cellOf(corner);
     const int r = static_cast<int>(std::ceil(radius / cell));
-    for (int dz = -r; dz <= r; ++dz)
-      for (int dy = -r; dy <= r; ++dy)
-        for (int dx = -r; dx <= r; ++dx) {
-          const CellId m = band.find(home + CellCoord(dx, dy, dz));
-          if (m == kNoCell)
-            continue;
-          const std::uint32_t l = cell_labels[static_cast<std::size_t>(m)];
-          if (l == 0 || l > classes.size() || classes[l - 1] != FeatureClass::kFace)
-            continue;
-          if ((grid.cellCenter(band.coord(m)) - corner).norm() <= radius)
-            cells.push_back(m);
-        }
+    forEachCellAround(band, home, r, [&](CellId m) {
+      if (classOfLabel(classes, cell_labels[static_cast<std::size_t>(m)]) ==
+            FeatureClass::kFace &&
+          (grid.cellCenter(band.coord(m)) - corner).norm() <= radius)
+        cells.push_back(m);
+    });
     if (!cells.empty()) {
       std::sort(cells.begin(), cells.end());
       corners.push_back(std::move(cells));
