@@ -10,11 +10,13 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <iostream>
 #include <random>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -292,6 +294,76 @@ TEST(CreaseAngles, MergeRuleOnASheet)
   EXPECT_EQ(
     visfeat::shallowCreaseMerge(graph, sheetAngles(90, 90, NAN), {contact}, 20.0),
     kept);
+}
+
+/** A 40 x 30 sheet like a box side between two fillets, cut open: the top face T1
+ * (y < 9), the top rim (y 9-10: E2 x < 18, E5 x >= 22), the side (y 11-18: S3
+ * x < 18, S6 x >= 22), the bottom rim (y 19-20: E7 x < 18, E8 x >= 22) and the bottom
+ * face B9 (y >= 21); V4 (x 18-21, y 9-20) is a vertex region across the side from rim
+ * to rim, as on a fillet: T1-S3, S3-B9, B9-S6 and S6-T1 close around it. */
+visfeat::TopologyGraph
+filletSheetGraph()
+{
+  visfeat::GridSpec grid;
+  grid.origin = Eigen::Vector3d::Zero();
+  grid.cell_size = 1.0;
+  grid.dims = Eigen::Vector3i(40, 30, 1);
+  std::vector<visfeat::CellCoord> cells;
+  for (int y = 0; y < 30; ++y)
+    for (int x = 0; x < 40; ++x)
+      cells.emplace_back(x, y, 0);
+  visfeat::VoxelBand::Options options;
+  options.repair = false;
+  const visfeat::VoxelBand band = visfeat::VoxelBand::fromCells(grid, cells, options);
+  std::vector<std::uint32_t> labels(band.size());
+  for (std::size_t i = 0; i < band.size(); ++i) {
+    const visfeat::CellCoord& c = band.coord(static_cast<visfeat::CellId>(i));
+    const int x = c.x(), y = c.y();
+    const int side = x < 18 ? 0 : (x < 22 ? 1 : 2); // left, the vertex, right
+    if (y < 9)
+      labels[i] = 1;
+    else if (y >= 21)
+      labels[i] = 9;
+    else if (side == 1)
+      labels[i] = 4;
+    else if (y <= 10)
+      labels[i] = side == 0 ? 2 : 5;
+    else if (y <= 18)
+      labels[i] = side == 0 ? 3 : 6;
+    else
+      labels[i] = side == 0 ? 7 : 8;
+  }
+  const std::vector<FeatureClass> classes = {
+    FeatureClass::kFace,   FeatureClass::kEdge, FeatureClass::kFace,
+    FeatureClass::kVertex, FeatureClass::kEdge, FeatureClass::kFace,
+    FeatureClass::kEdge,   FeatureClass::kEdge, FeatureClass::kFace};
+  return visfeat::TopologyGraph::build(band, labels, classes, {});
+}
+
+TEST(CreaseAngles, AVertexTheCreasesPassByJoinsTheirFace)
+{
+  const visfeat::TopologyGraph graph = filletSheetGraph();
+  ASSERT_EQ(graph.neighbours(4, FeatureClass::kEdge),
+            std::vector<std::uint32_t>({2, 5, 7, 8}));
+  std::vector<CreaseAngle> angles(9);
+  const std::array<std::pair<std::uint32_t, std::array<std::uint32_t, 2>>, 4> edges = {
+    {{2, {1, 3}}, {5, {1, 6}}, {7, {3, 9}}, {8, {6, 9}}}};
+  for (const auto& [e, faces] : edges) {
+    angles[e - 1].degrees = 90.0;
+    angles[e - 1].faces = faces;
+  }
+  using Into = std::vector<std::uint32_t>;
+  const Into kept = {0, 1, 2, 3, 4, 5, 6, 7, 8, 9};
+  // The two side faces apart: V4 is a corner of four faces and four creases.
+  EXPECT_EQ(visfeat::shallowCreaseMerge(graph, angles, {}, 20.0), kept);
+  // A shallow contact makes S3 and S6 one side: the rims pass V4 by (top-side and
+  // side-bottom, the top and the bottom in one pair each), so V4 joins the side, and
+  // each rim's two pieces become one edge.
+  visfeat::CreaseAngle contact;
+  contact.faces = {{3, 6}};
+  contact.degrees = 10.0;
+  EXPECT_EQ(visfeat::shallowCreaseMerge(graph, angles, {contact}, 20.0),
+            Into({0, 1, 2, 3, 3, 2, 3, 7, 7, 9}));
 }
 
 TEST(CreaseAngles, WrittenInTheGraphJsonForEdges)

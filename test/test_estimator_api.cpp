@@ -211,7 +211,7 @@ TEST(EstimatorApi, DefaultsAreTheLibrarysConstants)
   EXPECT_EQ(est.getPointFeatureDistance(), 1.0);
   EXPECT_FALSE(est.getNoiseMode());
   EXPECT_FALSE(est.getKeepFreeSpace());
-  EXPECT_FALSE(est.getFlatCoreFaces()); // off: see ComponentParameters::flat_core_faces
+  EXPECT_TRUE(est.getFlatCoreFaces()); // on: see ComponentParameters::flat_core_faces
 }
 
 TEST(EstimatorApi, NoiseModeFillsWhatWasNotSetInAnyOrder)

@@ -38,9 +38,9 @@ valueOptions()
 const std::set<std::string>&
 switchOptions()
 {
-  static const std::set<std::string> names{"-no_repair",  "-raw",         "-no_regions",
-                                           "-noise_mode", "-paper_noise", "-flat_cores",
-                                           "-q",          "-h",           "--help"};
+  static const std::set<std::string> names{
+    "-no_repair",  "-raw",           "-no_regions", "-noise_mode", "-paper_noise",
+    "-flat_cores", "-no_flat_cores", "-q",          "-h",          "--help"};
   return names;
 }
 
@@ -109,9 +109,10 @@ printHelp(const char* program)
              "clean-up)\n");
   print_info("    -no_regions       = label the components' cores only, not every "
              "point\n");
-  print_info("    -flat_cores       = a core thinner than a face but flat across is "
-             "the middle of a face between two creases about 2 min_radius cells "
-             "apart, not an edge (default: off; see README, Thin face cores)\n");
+  print_info("    -no_flat_cores    = a core thinner than a face is an edge, flat "
+             "across or not (default: a flat one is the middle of a face between two "
+             "creases about 2 min_radius cells apart; see README, Thin face cores; "
+             "-flat_cores, the default, is accepted)\n");
   print_info("    -opacity D        = blocked length tolerated between two "
              "cells (default: ");
   print_value("%g", kDefaultOpacity);
@@ -252,7 +253,11 @@ readValues(const Arguments& args, Options& opt, std::string& error)
   opt.repair = !args.has("-no_repair");
   opt.raw = args.has("-raw");
   opt.regions = !args.has("-no_regions");
-  opt.flat_cores = args.has("-flat_cores");
+  opt.flat_cores = !args.has("-no_flat_cores");
+  if (args.has("-flat_cores") && args.has("-no_flat_cores")) {
+    error = "-flat_cores and -no_flat_cores contradict each other: give one";
+    return false;
+  }
   if (opt.max_radius != 0 && opt.min_radius > opt.max_radius) {
     error = "-min_radius " + std::to_string(opt.min_radius) + " exceeds -max_radius " +
             std::to_string(opt.max_radius) + ": components need radii up to min_radius";

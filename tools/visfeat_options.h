@@ -45,7 +45,7 @@ struct Options
   double min_crease_angle = visfeat::CreaseAngleParameters::kDefaultMinCreaseAngle;
   bool raw = false;
   bool regions = true;
-  bool flat_cores = false;
+  bool flat_cores = true;
   double opacity = kDefaultOpacity;
   bool noise_mode = false;
   bool paper_noise = false;

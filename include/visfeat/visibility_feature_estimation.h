@@ -186,8 +186,8 @@ public:
   /** \brief A core too thin for a face by its depth but flat across (the middle of a
    * face about 2 min_radius cells wide between two creases) is a face
    * (ComponentParameters::flat_core_faces, visfeat::flatCore(); issue 14). Default
-   * off (such cores are edges, by depth alone): it gains on some public meshes and
-   * loses on others, see ComponentParameters::flat_core_faces. */
+   * on; off, such cores are edges by depth alone (what it gains and loses: see
+   * ComponentParameters::flat_core_faces). */
   inline void setFlatCoreFaces(bool on)
   {
     segmentation_parameters_.components.flat_core_faces = on;

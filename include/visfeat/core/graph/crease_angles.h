@@ -163,10 +163,12 @@ measureFaceContacts(const VoxelBand& band,
  * vertex joined in the graph to such an edge, or to an edge of a merged face, stops
  * being a vertex unless its remaining edges separate at least two different pairs of
  * (merged) faces: it then joins its remaining edges, which become one edge, or, with
- * none left, its first face. Edges of merged faces that then separate the same two
- * faces are one edge. Joined labels point at the kept region (the smallest face label
- * for faces, the first remaining edge for edges). angles: per region (label - 1),
- * measureCreaseAngles(). */
+ * none left, its first face. It also stops being one when its pairs do not close
+ * around it (a face in only one pair) and one face is in all of them: the creases
+ * pass it by (a fillet between two rims), and it joins that face. Edges of merged faces
+ * that then separate the same two faces are one edge. Joined labels point at the kept
+ * region (the smallest face label for faces, the first remaining edge for edges).
+ * angles: per region (label - 1), measureCreaseAngles(). */
 std::vector<std::uint32_t> shallowCreaseMerge(const TopologyGraph& graph,
                                               const std::vector<CreaseAngle>& angles,
                                               const std::vector<CreaseAngle>& contacts,

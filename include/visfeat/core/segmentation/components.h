@@ -55,14 +55,12 @@ struct ComponentParameters
   /** \brief Default mode: a core thinner than face_min_depth with at least
    * min_radius^2 cells is a face when the band around it is flat (flatCore(): no bend
    * across it, so it is the middle of a face between two creases about 2 min_radius
-   * cells apart, not the ridge of a crease). Off by default: by depth alone. On, the
-   * public fandisk mesh at 512 keeps a 30-cell-wide face between two creases and both
-   * creases (per-point F1 0.82 -> 0.88; fandisk and pinion at 256 +0.10), but the
-   * flat part of a filleted side becomes a face for a while and leaves a stray vertex
-   * after the blends merge (generated filleted box, rotation 2: 1/2/3 for 0/2/3), and a
+   * cells apart, not the ridge of a crease). Off: by depth alone. On (the default),
+   * the public fandisk mesh at 512 keeps a 30-cell-wide face between two creases and
+   * both creases (per-point F1 0.82 -> 0.88; fandisk and pinion at 256 +0.10), but a
    * tessellated cylinder's map ripples become faces (CGAL joint: 0.82 -> 0.79): README,
    * "Thin face cores". */
-  bool flat_core_faces = false;
+  bool flat_core_faces = true;
 
   static constexpr int kDefaultVertexMaxCells = 25;
   static constexpr double kDefaultDimensionality = 3.5;
