@@ -57,6 +57,34 @@ TEST(MeshSampling, AreaOfTrianglesAndMesh)
   EXPECT_DOUBLE_EQ(visfeat::triangleArea({0, 0, 0}, {2, 0, 0}, {0, 3, 0}), 3.0);
 }
 
+TEST(MeshSampling, ClosedMeshes)
+{
+  SurfaceMesh tetrahedron;
+  tetrahedron.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  tetrahedron.triangles = {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}};
+  EXPECT_TRUE(visfeat::meshIsClosed(tetrahedron));
+  // a degenerate triangle changes nothing
+  SurfaceMesh with_degenerate = tetrahedron;
+  with_degenerate.triangles.push_back({0, 0, 1});
+  EXPECT_TRUE(visfeat::meshIsClosed(with_degenerate));
+  // one face removed: three border edges
+  SurfaceMesh open = tetrahedron;
+  open.triangles.pop_back();
+  EXPECT_FALSE(visfeat::meshIsClosed(open));
+  // the same triangles as a soup (each its own vertices): open, coincident vertices
+  // are not merged
+  SurfaceMesh soup;
+  for (const auto& t : tetrahedron.triangles) {
+    const auto base = static_cast<std::uint32_t>(soup.vertices.size());
+    for (const std::uint32_t v : t)
+      soup.vertices.push_back(tetrahedron.vertices[v]);
+    soup.triangles.push_back({base, base + 1, base + 2});
+  }
+  EXPECT_FALSE(visfeat::meshIsClosed(soup));
+  EXPECT_FALSE(visfeat::meshIsClosed(SurfaceMesh{}));
+  EXPECT_FALSE(visfeat::meshIsClosed(unequalTriangles()));
+}
+
 TEST(MeshSampling, PointsLieOnTheirTriangles)
 {
   const SurfaceMesh mesh = unequalTriangles();

@@ -2,7 +2,9 @@
 // resolution, its search for narrow faces, the grid and the surface fill.
 #pragma once
 
+#include <visfeat/core/graph/graph_gaps.h>
 #include <visfeat/core/grid/resolution_search.h>
+#include <visfeat/core/mesh/mesh_sampling.h>
 #include <visfeat/core/segmentation/narrow_faces.h>
 #include <visfeat/impl/visibility_feature_estimation.hpp>
 
@@ -219,23 +221,37 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::searchResolution(
   const int min_radius = run.segmentation.components.min_radius;
   const std::size_t min_cells = static_cast<std::size_t>(kNarrowFaceCoreAreas) *
                                 static_cast<std::size_t>(min_radius * min_radius);
+  // A closed mesh bounds a solid: a graph that is not that of a closed part means
+  // features the resolution did not separate (kSearchOnGraphGaps).
+  const bool closed_mesh = mesh_ && meshIsClosed(*mesh_);
   double discarded_ms = 0.0;
   for (int step = 0;; ++step) {
     const std::vector<NarrowFace> faces = narrowFaces(
       results.band, results.map, min_radius, kNarrowFacePersistence, min_cells);
-    if (faces.empty())
-      break;
-    int narrowest = min_radius;
-    for (const NarrowFace& face : faces)
-      narrowest = std::min(narrowest, face.peak);
     const int current = run.resolution.resolution;
-    std::ostringstream found;
-    found << faces.size() << " narrow face" << (faces.size() == 1 ? "" : "s")
-          << " at resolution " << current << " (peaks of the visibility map below "
-          << "min_radius " << min_radius << " rings, the narrowest " << narrowest
-          << " rings)";
     const int next =
       step < kMaxSearchSteps ? nextSearchResolution(current, run.search_cap) : 0;
+    std::ostringstream found;
+    if (faces.empty()) {
+      const GraphGaps gaps =
+        closed_mesh && run.segmentation.complete_regions && !run.segmentation.raw
+          ? findGraphGaps(results.graph)
+          : GraphGaps{};
+      if (!kSearchOnGraphGaps || !gaps.any())
+        break;
+      found << "a closed mesh whose graph at resolution " << current
+            << " is not that of a closed part (" << gaps.describe() << ")";
+      if (next == 0)
+        break; // checkGraph() has said so
+    } else {
+      int narrowest = min_radius;
+      for (const NarrowFace& face : faces)
+        narrowest = std::min(narrowest, face.peak);
+      found << faces.size() << " narrow face" << (faces.size() == 1 ? "" : "s")
+            << " at resolution " << current << " (peaks of the visibility map below "
+            << "min_radius " << min_radius << " rings, the narrowest " << narrowest
+            << " rings)";
+    }
     if (next == 0) {
       std::ostringstream w;
       w << found.str() << ": they merge into the edges around them; the resolution "
@@ -271,8 +287,8 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::searchResolution(
       output.swap(finer_output);
       continue;
     }
-    run.warnings.push_back(found.str() + ": they merge into the edges around them; " +
-                           "resolution " + std::to_string(next) + " failed (" +
+    run.warnings.push_back(found.str() + ": features merge; " + "resolution " +
+                           std::to_string(next) + " failed (" +
                            detail::oneLine(problem) +
                            "); set a finer resolution within the memory limit, or "
                            "lower min_radius");

@@ -47,6 +47,33 @@ meshArea(const SurfaceMesh& mesh)
   return total;
 }
 
+bool
+meshIsClosed(const SurfaceMesh& mesh)
+{
+  std::vector<std::uint64_t> edges;
+  edges.reserve(3 * mesh.triangles.size());
+  for (const auto& t : mesh.triangles) {
+    if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0])
+      continue;
+    for (int i = 0; i < 3; ++i) {
+      const std::uint64_t a = t[i], b = t[(i + 1) % 3];
+      edges.push_back(std::min(a, b) << 32 | std::max(a, b));
+    }
+  }
+  if (edges.empty())
+    return false;
+  std::sort(edges.begin(), edges.end());
+  for (std::size_t i = 0; i < edges.size();) {
+    std::size_t j = i + 1;
+    while (j < edges.size() && edges[j] == edges[i])
+      ++j;
+    if (j - i < 2)
+      return false;
+    i = j;
+  }
+  return true;
+}
+
 std::size_t
 samplesForSpacing(double area, double spacing, std::size_t max_count)
 {

@@ -28,6 +28,13 @@ double triangleArea(const Eigen::Vector3d& a,
  *         coordinate, or a triangle index out of range. */
 void validateMesh(const SurfaceMesh& mesh);
 
+/** \brief Whether the mesh is closed: every edge (a pair of vertex indices) is shared
+ * by two triangles or more, so it bounds a solid and the features of its surface form a
+ * closed B-rep. Triangles with a repeated index are left out; coincident vertices
+ * with different indices are not merged (a mesh stored as a triangle soup reads as
+ * open). Call validateMesh() first. */
+bool meshIsClosed(const SurfaceMesh& mesh);
+
 /** \brief Total area of the triangles (degenerate ones add 0). Call validateMesh()
  * first. */
 double meshArea(const SurfaceMesh& mesh);
