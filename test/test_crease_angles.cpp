@@ -204,23 +204,30 @@ TEST(CreaseAngles, FilletsReadByTheirRadius)
 
 // --- The merge rule on a sheet of cells ----------------------------------------------
 
+/** A width x height sheet of cells (z = 0, cell size 1, no repair). */
+visfeat::VoxelBand
+sheetBand(int width, int height)
+{
+  visfeat::GridSpec grid;
+  grid.origin = Eigen::Vector3d::Zero();
+  grid.cell_size = 1.0;
+  grid.dims = Eigen::Vector3i(width, height, 1);
+  std::vector<visfeat::CellCoord> cells;
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x)
+      cells.emplace_back(x, y, 0);
+  visfeat::VoxelBand::Options options;
+  options.repair = false;
+  return visfeat::VoxelBand::fromCells(grid, cells, options);
+}
+
 /** A 40 x 20 sheet of cells (z = 0): F1 x < 18; E2 x 18-19, y < 9; V4 x 18-19,
  * y 9-10; E5 x 18-19, y > 10; F3 x >= 20, y < 9; E7 x >= 20, y 9-10; F6 x >= 20,
  * y > 10. V4 is the corner where E2 (F1 | F3), E5 (F1 | F6) and E7 (F3 | F6) meet. */
 visfeat::TopologyGraph
 sheetGraph()
 {
-  visfeat::GridSpec grid;
-  grid.origin = Eigen::Vector3d::Zero();
-  grid.cell_size = 1.0;
-  grid.dims = Eigen::Vector3i(40, 20, 1);
-  std::vector<visfeat::CellCoord> cells;
-  for (int y = 0; y < 20; ++y)
-    for (int x = 0; x < 40; ++x)
-      cells.emplace_back(x, y, 0);
-  visfeat::VoxelBand::Options options;
-  options.repair = false;
-  const visfeat::VoxelBand band = visfeat::VoxelBand::fromCells(grid, cells, options);
+  const visfeat::VoxelBand band = sheetBand(40, 20);
   std::vector<std::uint32_t> labels(band.size());
   for (std::size_t i = 0; i < band.size(); ++i) {
     const visfeat::CellCoord& c = band.coord(static_cast<visfeat::CellId>(i));
@@ -304,17 +311,7 @@ TEST(CreaseAngles, MergeRuleOnASheet)
 visfeat::TopologyGraph
 filletSheetGraph()
 {
-  visfeat::GridSpec grid;
-  grid.origin = Eigen::Vector3d::Zero();
-  grid.cell_size = 1.0;
-  grid.dims = Eigen::Vector3i(40, 30, 1);
-  std::vector<visfeat::CellCoord> cells;
-  for (int y = 0; y < 30; ++y)
-    for (int x = 0; x < 40; ++x)
-      cells.emplace_back(x, y, 0);
-  visfeat::VoxelBand::Options options;
-  options.repair = false;
-  const visfeat::VoxelBand band = visfeat::VoxelBand::fromCells(grid, cells, options);
+  const visfeat::VoxelBand band = sheetBand(40, 30);
   std::vector<std::uint32_t> labels(band.size());
   for (std::size_t i = 0; i < band.size(); ++i) {
     const visfeat::CellCoord& c = band.coord(static_cast<visfeat::CellId>(i));
