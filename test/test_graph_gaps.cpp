@@ -92,6 +92,11 @@ TEST(GraphGaps, EdgesWithoutCornersAloneAreNoGap)
   loops.no_corner = 2;
   EXPECT_FALSE(loops.any());
   EXPECT_EQ(loops.describe(), "");
+  GraphGaps one = loops;
+  one.edges = 8;
+  one.one_corner = 1;
+  one.no_corner = 0;
+  EXPECT_EQ(one.describe(), "1 of 8 edges ends at a corner on one side only");
   GraphGaps all = loops;
   all.edges = 28;
   all.one_corner = 11;
@@ -100,8 +105,8 @@ TEST(GraphGaps, EdgesWithoutCornersAloneAreNoGap)
   all.lone_regions = 2;
   EXPECT_TRUE(all.any());
   EXPECT_EQ(all.describe(),
-            "11 of 28 edges end at a corner on one side only (8 at "
-            "neither), 1 edge does not lie between two faces, 2 regions "
+            "11 of 28 edges end at a corner on one side only and 8 more at "
+            "neither, 1 edge does not lie between two faces, 2 regions "
             "touch no other");
 }
 

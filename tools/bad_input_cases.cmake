@@ -36,6 +36,7 @@ set(VISFEAT_BAD_INPUT_CASES
   "opacity_nan|-opacity expects a number, got 'nan'"
   "min_radius_above_max|-min_radius 20 exceeds -max_radius 10"
   "flat_cores_and_no_flat_cores|-flat_cores and -no_flat_cores contradict each other"
+  "paper_noise_and_smooth|-paper_noise is the paper's setting without smoothing"
   "paper_noise_and_noise_mode|-paper_noise and -noise_mode are two settings"
   "paper_noise_and_opacity|give -paper_noise or -opacity"
   "unknown_option|unknown option -resolutoin"

@@ -388,7 +388,9 @@ printSummary(const Estimator& estimator, const vt::Options& opt)
   }
   print_info("\n");
   const visfeat::PhaseTimes& times = estimator.getPhaseTimes();
-  print_info("Phases: grid ");
+  print_info("Phases: shape checks and resolution ");
+  print_value("%.1f", times.shape_ms);
+  print_info(" ms, grid ");
   print_value("%.1f", times.grid_ms);
   if (times.smoothing_ms > 0.0) {
     print_info(" ms, smoothing ");
@@ -406,6 +408,10 @@ printSummary(const Estimator& estimator, const vt::Options& opt)
   print_value("%.1f", times.output_ms);
   print_info(" ms, graph ");
   print_value("%.1f", times.graph_ms);
+  if (times.search_ms > 0.0) {
+    print_info(" ms, coarser runs of the resolution search ");
+    print_value("%.1f", times.search_ms);
+  }
   print_info(" ms; total ");
   print_value("%.1f", times.total());
   print_info(" ms\n");

@@ -240,6 +240,11 @@ readValues(const Arguments& args, Options& opt, std::string& error)
     error = "-paper_noise sets the opacity: give -paper_noise or -opacity";
     return false;
   }
+  if (opt.paper_noise && args.has("-smooth")) {
+    error = "-paper_noise is the paper's setting without smoothing: give -paper_noise "
+            "or -smooth";
+    return false;
+  }
   if (opt.paper_noise)
     opt.opacity = Estimator::kPaperNoiseOpacity;
   if (args.has("-mesh_spacing") && !(opt.mesh.spacing > 0.0)) {

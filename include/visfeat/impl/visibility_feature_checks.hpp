@@ -4,6 +4,7 @@
 
 #include <visfeat/core/band/band_pieces.h>
 #include <visfeat/core/graph/graph_gaps.h>
+#include <visfeat/core/mesh/mesh_sampling.h>
 #include <visfeat/impl/visibility_feature_estimation.hpp>
 
 #include <algorithm>
@@ -129,8 +130,9 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::checkGraph(const Results& resu
     << ". Features closer than about " << 2 * min_radius << " cells (2 min_radius) at "
     << "resolution " << run.resolution.resolution
     << " were not all separated: read the graph as approximate, or raise the "
-       "resolution (the border of an open scan also leaves edges without their outer "
-       "corner)";
+       "resolution";
+  if (!(mesh_ && meshIsClosed(*mesh_))) // a closed mesh has no border
+    w << " (the border of an open scan also leaves edges without their outer corner)";
   run.warnings.push_back(w.str());
 }
 

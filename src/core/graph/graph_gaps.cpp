@@ -31,9 +31,11 @@ GraphGaps::describe() const
   std::ostringstream out;
   const char* sep = "";
   if (one_corner > 0) {
-    out << one_corner << " of " << edges << " edges end at a corner on one side only";
+    out << one_corner << " of " << edges
+        << (one_corner == 1 ? " edges ends" : " edges end")
+        << " at a corner on one side only";
     if (no_corner > 0)
-      out << " (" << no_corner << " at neither)";
+      out << " and " << no_corner << " more at neither";
     sep = ", ";
   }
   if (not_two_faces > 0) {

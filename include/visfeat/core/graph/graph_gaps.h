@@ -29,8 +29,8 @@ struct GraphGaps
   bool any() const { return one_corner > 0 || not_two_faces > 0 || lone_regions > 0; }
 
   /** \brief One line for the user, e.g. "11 of 28 edges end at a corner on one side
-   * only, 2 do not lie between two faces, 1 region touches no other"; empty when
-   * !any(). */
+   * only and 3 more at neither, 2 edges do not lie between two faces, 1 region touches
+   * no other"; empty when !any(). */
   std::string describe() const;
 };
 
