@@ -45,6 +45,7 @@ set(VISFEAT_BAD_INPUT_CASES
   "mesh_spacing_negative|-mesh_spacing must be positive, got -1"
   "mesh_points_and_spacing|give -mesh_points or -mesh_spacing, not both"
   "mesh_spacing_too_fine|points, more than 1000000000"
+  "mesh_with_fill_grid|-fill grid needs an organized cloud (height > 1)&&a mesh gives its own triangles"
   "output_not_pcd|must have the extension .pcd"
   "output_dir_missing|does not exist"
   "output_is_directory|is a directory"

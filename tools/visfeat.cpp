@@ -185,6 +185,12 @@ loadInput(const vt::Options& opt,
   print_highlight("Loading ");
   print_value("%s ", opt.input.c_str());
   const bool mesh = vt::isMeshFile(opt.input);
+  if (mesh && opt.fill == visfeat::SurfaceFill::kOrganized) {
+    print_info("\n");
+    error = "-fill grid needs an organized cloud (height > 1); a mesh gives its own "
+            "triangles: give -fill mesh or auto (the default)";
+    return false;
+  }
   std::string summary;
   if (mesh ? !vt::loadMeshAsCloud(opt.input, opt.mesh, in.cloud, in.mesh,
                                   in.mesh_offset, summary, error)
