@@ -7,7 +7,9 @@
 #include <visfeat/core/band/point_smoothing.h>
 #include <visfeat/core/grid/grid_spec.h>
 #include <visfeat/core/grid/resolution.h>
+#include <visfeat/core/grid/resolution_search.h>
 #include <visfeat/core/visibility/visibility_map.h>
+#include <visfeat/surface_fill.h>
 #include <visfeat/visibility_feature_estimation.h>
 
 #include <pcl/console/print.h>
@@ -72,8 +74,12 @@ printHelp(const char* program)
              "bounding box (default: ");
   print_value("automatic");
   print_info(": %g point spacings per cell, the spacing estimated from k-NN "
-             "distances; %d-%d cells)\n",
-             visfeat::kSpacingsPerCell, visfeat::GridSpec::kResolutionRange.min,
+             "distances, at least %d where the band is filled between the points and "
+             "%d for a mesh; then doubled, up to %d, while the map shows narrow faces "
+             "or a closed mesh's graph is not closed; %d-%d cells)\n",
+             visfeat::kSpacingsPerCell, visfeat::kTopologyResolution,
+             visfeat::kTopologyResolution, visfeat::kMaxSearchResolution,
+             visfeat::GridSpec::kResolutionRange.min,
              visfeat::GridSpec::kResolutionRange.max);
   print_info(
     "    -min_radius R     = cells with radius >= R form components (default: ");
