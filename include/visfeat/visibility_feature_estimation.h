@@ -345,6 +345,7 @@ public:
   inline void setInputMesh(const std::shared_ptr<const SurfaceMesh>& mesh)
   {
     mesh_ = mesh;
+    mesh_closed_ = mesh_ && meshIsClosed(*mesh_);
   }
   inline const std::shared_ptr<const SurfaceMesh>& getInputMesh() const
   {
@@ -561,6 +562,7 @@ private:
   LocalTriangleParameters local_triangles_;
   OrganizedTriangleParameters organized_triangles_;
   std::shared_ptr<const SurfaceMesh> mesh_;
+  bool mesh_closed_ = false; // meshIsClosed(*mesh_), set with the mesh
 
   // Between initCompute() and computeFeature().
   std::unique_ptr<Run> run_;

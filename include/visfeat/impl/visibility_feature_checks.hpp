@@ -4,7 +4,6 @@
 
 #include <visfeat/core/band/band_pieces.h>
 #include <visfeat/core/graph/graph_gaps.h>
-#include <visfeat/core/mesh/mesh_sampling.h>
 #include <visfeat/impl/visibility_feature_estimation.hpp>
 
 #include <algorithm>
@@ -131,7 +130,7 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::checkGraph(const Results& resu
     << "resolution " << run.resolution.resolution
     << " were not all separated: read the graph as approximate, or raise the "
        "resolution";
-  if (!(mesh_ && meshIsClosed(*mesh_))) // a closed mesh has no border
+  if (!mesh_closed_) // a closed mesh has no border
     w << " (the border of an open scan also leaves edges without their outer corner)";
   run.warnings.push_back(w.str());
 }

@@ -4,7 +4,6 @@
 
 #include <visfeat/core/graph/graph_gaps.h>
 #include <visfeat/core/grid/resolution_search.h>
-#include <visfeat/core/mesh/mesh_sampling.h>
 #include <visfeat/core/segmentation/narrow_faces.h>
 #include <visfeat/impl/visibility_feature_estimation.hpp>
 
@@ -221,9 +220,6 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::searchResolution(
   const int min_radius = run.segmentation.components.min_radius;
   const std::size_t min_cells = static_cast<std::size_t>(kNarrowFaceCoreAreas) *
                                 static_cast<std::size_t>(min_radius * min_radius);
-  // A closed mesh bounds a solid: a graph that is not that of a closed part means
-  // features the resolution did not separate (kSearchOnGraphGaps).
-  const bool closed_mesh = mesh_ && meshIsClosed(*mesh_);
   double discarded_ms = 0.0;
   for (int step = 0;; ++step) {
     const std::vector<NarrowFace> faces = narrowFaces(
@@ -233,11 +229,14 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::searchResolution(
       step < kMaxSearchSteps ? nextSearchResolution(current, run.search_cap) : 0;
     std::ostringstream found;
     if (faces.empty()) {
-      const GraphGaps gaps =
-        closed_mesh && run.segmentation.complete_regions && !run.segmentation.raw
-          ? findGraphGaps(results.graph)
-          : GraphGaps{};
-      if (!kSearchOnGraphGaps || !gaps.any())
+      // A closed mesh bounds a solid: a graph that is not that of a closed part means
+      // features the resolution did not separate (kSearchOnGraphGaps).
+      const GraphGaps gaps = kSearchOnGraphGaps && mesh_closed_ &&
+                                 run.segmentation.complete_regions &&
+                                 !run.segmentation.raw
+                               ? findGraphGaps(results.graph)
+                               : GraphGaps{};
+      if (!gaps.any())
         break;
       found << "a closed mesh whose graph at resolution " << current
             << " is not that of a closed part (" << gaps.describe() << ")";
@@ -287,7 +286,7 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::searchResolution(
       output.swap(finer_output);
       continue;
     }
-    run.warnings.push_back(found.str() + ": features merge; " + "resolution " +
+    run.warnings.push_back(found.str() + ": features merge; resolution " +
                            std::to_string(next) + " failed (" +
                            detail::oneLine(problem) +
                            "); set a finer resolution within the memory limit, or "
