@@ -325,6 +325,30 @@ TEST(PointLabeling, InconsistentInputIsRefused)
   EXPECT_THROW(layer.labeling(1.0), visfeat::Error);
 }
 
+TEST(PointlessVertices, OnlyVertexRegionsWithCellsAndNoPoint)
+{
+  // regions 1 face, 2 vertex, 3 edge, 4 vertex, 5 vertex (no cell)
+  const std::vector<FeatureClass> classes = {FeatureClass::kFace, FeatureClass::kVertex,
+                                             FeatureClass::kEdge, FeatureClass::kVertex,
+                                             FeatureClass::kVertex};
+  const std::vector<std::uint32_t> cells = {1, 2, 0, 4, 3, 4, 1, 2};
+  // vertex 2 has a point, vertex 4 none: only 4 is listed, with its cells in order
+  auto pointless = visfeat::pointlessVertices(cells, classes, {0, 5, 1, 2, 0, 0});
+  ASSERT_EQ(pointless.size(), 1u);
+  EXPECT_EQ(pointless[0].first, 4u);
+  EXPECT_EQ(pointless[0].second, (std::vector<CellId>{3, 5}));
+  // labels beyond the counts count as without points: 2 and 4 both listed
+  pointless = visfeat::pointlessVertices(cells, classes, {0, 5});
+  ASSERT_EQ(pointless.size(), 2u);
+  EXPECT_EQ(pointless[0].first, 2u);
+  EXPECT_EQ(pointless[0].second, (std::vector<CellId>{1, 7}));
+  EXPECT_EQ(pointless[1].first, 4u);
+  // every vertex with a point: none
+  EXPECT_TRUE(visfeat::pointlessVertices(cells, classes, {0, 1, 1, 1, 1, 1}).empty());
+  // a cell label beyond the regions is refused
+  EXPECT_THROW(visfeat::pointlessVertices({6}, classes, {}), visfeat::Error);
+}
+
 TEST(RegionPointGeometry, CentroidsAndBoundsOfThePoints)
 {
   const Layer layer;

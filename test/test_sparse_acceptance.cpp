@@ -130,6 +130,15 @@ runCase(const std::string& name, std::size_t count, std::uint64_t seed)
   const ev::PointScores scores = ev::scoreFeaturePoints(feature, distance);
   const ev::TopologyComparison topology = ev::compareTopology(
     model, samples.points, samples.face, labels, classes, est.getTopologyGraph(), unit);
+  // every vertex of the graph is on a point of the labelled cloud (a sparse cloud may
+  // have no sample near a corner: the vertex claims the nearest, claimCornerPoints)
+  const visfeat::TopologyGraph& graph = est.getTopologyGraph();
+  for (std::uint32_t id = 1; id <= graph.size(); ++id) {
+    const visfeat::GraphNode& node = graph.node(id);
+    EXPECT_TRUE(node.feature_class != visfeat::FeatureClass::kVertex || node.points > 0)
+      << outcome.name << ": vertex " << id << " (" << node.cells
+      << " cells) has no point";
+  }
   outcome.exact = topology.exact();
   outcome.precision = scores.precision();
   outcome.recall = scores.recall();

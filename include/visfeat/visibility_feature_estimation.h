@@ -520,6 +520,13 @@ private:
                    const Run& run,
                    const PointCloudIn& surface,
                    PointCloudOut& output) const;
+  /** Last step of the labelling: a vertex region that no point took
+   * (pointlessVertices) claims the point nearest to its cells within
+   * kCornerClaimDistances x point_feature_distance that is not another vertex's. */
+  void claimCornerPoints(Results& results,
+                         const Run& run,
+                         const PointCloudIn& surface,
+                         PointCloudOut& output) const;
   void buildGraph(Results& results, const Run& run, const PointCloudOut& output) const;
   /** Relabels cells, points and the graph after FeatureSegmentation::mergeRegions
    * (into: per label, the label it joins); returns mergeRegions' renumbering, empty

@@ -19,6 +19,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <new>
 #include <sstream>
 
@@ -292,6 +293,96 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::labelPoints(
 
 template <typename PointInT, typename PointOutT>
 void
+VisibilityFeatureEstimation<PointInT, PointOutT>::claimCornerPoints(
+  Results& results,
+  const Run& run,
+  const PointCloudIn& surface,
+  PointCloudOut& output) const
+{
+  const double limit = kCornerClaimDistances * run.segmentation.point_feature_distance;
+  if (!(limit > 0.0) || run.segmentation.raw)
+    return;
+  std::vector<std::uint64_t> points_per_label(results.segmentation.regions().size() + 1,
+                                              0);
+  for (const PointOutT& p : output.points)
+    if (p.label < points_per_label.size())
+      ++points_per_label[p.label];
+  const auto vertices =
+    pointlessVertices(results.segmentation.cellLabels(),
+                      results.segmentation.regionClasses(), points_per_label);
+  if (vertices.empty())
+    return;
+  // The band cells within the claim distance of a pointless vertex's cells, and which
+  // vertices (few: a claim is the exception).
+  const VoxelBand& band = results.band;
+  const int reach = static_cast<int>(std::ceil(limit));
+  std::multimap<CellId, std::size_t> vertices_near;
+  for (std::size_t k = 0; k < vertices.size(); ++k) {
+    std::vector<CellId> near;
+    for (const CellId v : vertices[k].second)
+      for (int dz = -reach; dz <= reach; ++dz)
+        for (int dy = -reach; dy <= reach; ++dy)
+          for (int dx = -reach; dx <= reach; ++dx) {
+            const CellId c = band.find(band.coord(v) + CellCoord(dx, dy, dz));
+            if (c != kNoCell)
+              near.push_back(c);
+          }
+    std::sort(near.begin(), near.end());
+    near.erase(std::unique(near.begin(), near.end()), near.end());
+    for (const CellId c : near)
+      vertices_near.emplace(c, k);
+  }
+  const auto vertex = static_cast<std::uint8_t>(FeatureClass::kVertex);
+  std::vector<double> best(vertices.size(), limit * limit);
+  std::vector<std::size_t> best_point(vertices.size(), output.size());
+  const GridSpec& grid = band.grid();
+  for (std::size_t i = 0; i < output.size(); ++i) {
+    if (output[i].feature_class == vertex)
+      continue; // another vertex's point stays its own
+    // the point as the band saw it, and its cell (as in labelPoints)
+    const auto index = static_cast<std::size_t>((*indices_)[i]);
+    if (!pcl::isXYZFinite((*input_)[index]))
+      continue;
+    const PointInT& p = fake_surface_ ? surface[index] : (*input_)[index];
+    const CellId cell = fake_surface_
+                          ? band.pointCell()[index]
+                          : band.find(grid.cellOf(Eigen::Vector3d(p.x, p.y, p.z)));
+    const auto [first, last] = vertices_near.equal_range(cell);
+    if (cell == kNoCell || first == last)
+      continue;
+    const Eigen::Vector3d q = grid.toCellUnits(Eigen::Vector3d(p.x, p.y, p.z));
+    for (auto it = first; it != last; ++it) {
+      const std::size_t k = it->second;
+      for (const CellId v : vertices[k].second) {
+        const double d2 =
+          (q - band.coord(v).cast<double>() - Eigen::Vector3d::Constant(0.5))
+            .squaredNorm();
+        if (d2 < best[k] || (d2 == best[k] && best_point[k] == output.size())) {
+          best[k] = d2;
+          best_point[k] = i;
+        }
+      }
+    }
+  }
+  bool claimed = false;
+  for (std::size_t k = 0; k < vertices.size(); ++k) {
+    const std::size_t i = best_point[k];
+    if (i == output.size() || output[i].feature_class == vertex)
+      continue; // none near, or the nearest of two vertices: the first keeps it
+    output[i].label = vertices[k].first;
+    output[i].feature_class = vertex;
+    claimed = true;
+  }
+  if (claimed) { // the nodes' point geometry; cells, arcs and angles stay
+    RegionPointGeometry geometry(results.segmentation.regions().size());
+    for (const PointOutT& p : output.points)
+      geometry.add(p.label, Eigen::Vector3d(p.x, p.y, p.z));
+    geometry.applyTo(results.graph);
+  }
+}
+
+template <typename PointInT, typename PointOutT>
+void
 VisibilityFeatureEstimation<PointInT, PointOutT>::buildGraph(
   Results& results, const Run& run, const PointCloudOut& output) const
 {
@@ -439,6 +530,7 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::computeResults(
   start = Clock::now();
   buildGraph(results, run, output);
   cleanUpRegions(results, run, output);
+  claimCornerPoints(results, run, *surface, output);
   run.times.graph_ms = detail::millisecondsSince(start);
   checkResults(results, run);
   return results;

@@ -161,6 +161,36 @@ PointLabeling::labelOf(const Eigen::Vector3d& q, CellId cell) const
   return result;
 }
 
+std::vector<std::pair<std::uint32_t, std::vector<CellId>>>
+pointlessVertices(const std::vector<std::uint32_t>& cell_labels,
+                  const std::vector<FeatureClass>& region_classes,
+                  const std::vector<std::uint64_t>& points_per_label)
+{
+  const auto pointless = [&](std::size_t l) {
+    return region_classes[l - 1] == FeatureClass::kVertex &&
+           (l >= points_per_label.size() || points_per_label[l] == 0);
+  };
+  std::vector<std::pair<std::uint32_t, std::vector<CellId>>> vertices;
+  bool any = false;
+  for (std::size_t l = 1; l <= region_classes.size(); ++l)
+    any = any || pointless(l);
+  if (!any)
+    return vertices;
+  std::vector<std::vector<CellId>> cells(region_classes.size() + 1);
+  for (std::size_t c = 0; c < cell_labels.size(); ++c) {
+    const std::uint32_t l = cell_labels[c];
+    if (l > region_classes.size())
+      throw Error("pointlessVertices: cell label " + std::to_string(l) +
+                  " exceeds the " + std::to_string(region_classes.size()) + " regions");
+    if (l != 0 && pointless(l))
+      cells[l].push_back(static_cast<CellId>(c));
+  }
+  for (std::size_t l = 1; l < cells.size(); ++l)
+    if (!cells[l].empty())
+      vertices.emplace_back(static_cast<std::uint32_t>(l), std::move(cells[l]));
+  return vertices;
+}
+
 RegionPointGeometry::RegionPointGeometry(std::size_t regions)
 {
   Sum empty;

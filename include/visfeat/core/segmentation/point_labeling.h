@@ -145,6 +145,29 @@ private:
   std::vector<CellId> around_;
 };
 
+/** \brief A vertex region that no point took claims the point nearest to its cells
+ * within this many times point_feature_distance (the estimator's last labelling
+ * step). With cells finer than the points the estimator sets that distance to one
+ * point spacing, and the nearest sample to a corner lies up to about 1.6 spacings away
+ * (sparse acceptance: 10,000 points of the icosahedron and the U prism, 5.3-6.3 cells
+ * for 4-cell spacings). */
+constexpr double kCornerClaimDistances = 2.0;
+
+/** \brief The vertex regions that no point took, for the claim above: a sparse cloud
+ * may have no sample within point_feature_distance of a corner, and its vertex would be
+ * in the graph but on no point of the labelled cloud.
+ * \param[in] cell_labels per band cell, its region label (1-based), 0 = none
+ * \param[in] region_classes region_classes[label - 1] is the class of a region
+ * \param[in] points_per_label points_per_label[l] = points labelled l (index 0 is
+ *            ignored; labels beyond its size count as without points)
+ * \return (label, its cells in increasing id) per vertex region with cells and no
+ *         point, in label order.
+ * \throws visfeat::Error when a cell label exceeds the regions. */
+std::vector<std::pair<std::uint32_t, std::vector<CellId>>>
+pointlessVertices(const std::vector<std::uint32_t>& cell_labels,
+                  const std::vector<FeatureClass>& region_classes,
+                  const std::vector<std::uint64_t>& points_per_label);
+
 /** \brief Node geometry of the topology graph from labelled points: per region, the
  * number of its points, their centroid and bounding box (world units). */
 class RegionPointGeometry
