@@ -90,6 +90,7 @@ buildGraph(const VoxelBand& band,
   // The literal dilation rule; the contact filter and the vertex-face rule have their
   // own tests.
   p.min_face_contact = 0.0;
+  p.max_edge_faces = 0;
   p.vertex_faces_from_edges = false;
   return TopologyGraph::build(band, labels, classes, p);
 }
@@ -795,9 +796,48 @@ TEST(TopologyGraph, EdgeKeepsOnlyFacesAlongItsLength)
   const TopologyGraph filtered = TopologyGraph::build(band, labels, classes, p);
   EXPECT_EQ(filtered.facesOfEdge(2), (std::vector<std::uint32_t>{1, 3}));
   p.min_face_contact = 0.0;
+  p.max_edge_faces = 0;
   const TopologyGraph literal = TopologyGraph::build(band, labels, classes, p);
   EXPECT_EQ(literal.facesOfEdge(2), (std::vector<std::uint32_t>{1, 3, 4}));
   p.min_face_contact = 1.5;
+  EXPECT_THROW(TopologyGraph::validate(p), visfeat::Error);
+}
+
+TEST(TopologyGraph, AnEdgeKeepsTheTwoFacesItTouchesMost)
+{
+  // A strip x = 0..19, y = 0..10: the edge (y == 5) between faces A (y < 5) and B
+  // (y > 5); a third face C holds the two rows next to the edge on A's side for
+  // x >= 12 (as a face that leaked around a corner does), reaching past the fair share
+  // of contact: B 2 rows x 20, A 2 x 12, C 2 x 8.
+  GridSpec grid;
+  grid.dims = Eigen::Vector3i(40, 20, 3);
+  std::vector<visfeat::CellCoord> cells;
+  for (int y = 0; y <= 10; ++y)
+    for (int x = 0; x <= 19; ++x)
+      cells.emplace_back(x, y, 1);
+  const VoxelBand band = VoxelBand::fromCells(grid, cells, VoxelBand::Options{false});
+  std::vector<std::uint32_t> labels(band.size(), 0);
+  for (std::size_t i = 0; i < band.size(); ++i) {
+    const visfeat::CellCoord& c = band.coord(static_cast<visfeat::CellId>(i));
+    labels[i] = c.y() == 5                                    ? 2u
+                : (c.x() >= 12 && (c.y() == 3 || c.y() == 4)) ? 4u
+                : c.y() < 5                                   ? 1u
+                                                              : 3u;
+  }
+  const std::vector<FeatureClass> classes{FeatureClass::kFace, FeatureClass::kEdge,
+                                          FeatureClass::kFace, FeatureClass::kFace};
+  TopologyGraphParameters p;
+  p.dilation_radius = 2;
+  EXPECT_EQ(p.max_edge_faces, 2);
+  const TopologyGraph two = TopologyGraph::build(band, labels, classes, p);
+  EXPECT_EQ(two.facesOfEdge(2), (std::vector<std::uint32_t>{1, 3}));
+  p.max_edge_faces = 0; // no limit: C too, it passes the fair share
+  const TopologyGraph any = TopologyGraph::build(band, labels, classes, p);
+  EXPECT_EQ(any.facesOfEdge(2), (std::vector<std::uint32_t>{1, 3, 4}));
+  p.max_edge_faces = 1; // the one it touches most
+  const TopologyGraph one = TopologyGraph::build(band, labels, classes, p);
+  EXPECT_EQ(one.facesOfEdge(2), (std::vector<std::uint32_t>{3}));
+  p.max_edge_faces = -1;
   EXPECT_THROW(TopologyGraph::validate(p), visfeat::Error);
 }
 

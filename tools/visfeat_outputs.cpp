@@ -145,6 +145,7 @@ graphMetadata(const Estimator& estimator,
     {"point_feature_distance", std::to_string(sp.point_feature_distance)},
     {"graph_dilation", std::to_string(graph.parameters().dilation_radius)},
     {"graph_min_face_contact", std::to_string(graph.parameters().min_face_contact)},
+    {"graph_max_edge_faces", std::to_string(graph.parameters().max_edge_faces)},
     {"graph_vertex_faces_from_edges",
      graph.parameters().vertex_faces_from_edges ? "true" : "false"}};
   return meta;

@@ -9,6 +9,7 @@
 #include <charconv>
 #include <cmath>
 #include <fstream>
+#include <functional>
 #include <limits>
 #include <locale>
 #include <ostream>
@@ -200,6 +201,7 @@ appendContactArcs(std::uint32_t label,
                   const std::vector<std::uint32_t>& found,
                   const std::vector<FeatureClass>& region_classes,
                   double min_face_contact,
+                  int max_edge_faces,
                   LabelPairs& pairs)
 {
   // Reached cells per region; an edge keeps a face only if it reaches a fair share
@@ -214,11 +216,27 @@ appendContactArcs(std::uint32_t label,
   for (const auto& [other, count] : counts)
     if (region_classes[other - 1] == FeatureClass::kFace)
       strongest_face = std::max(strongest_face, count);
+  // A manifold edge bounds two faces: beyond the fair share, an edge keeps the
+  // max_edge_faces faces it reaches most (all those tied with the last one kept).
+  std::vector<std::size_t> face_counts;
+  for (const auto& [other, count] : counts)
+    if (region_classes[other - 1] == FeatureClass::kFace &&
+        static_cast<double>(count) >=
+          min_face_contact * static_cast<double>(strongest_face))
+      face_counts.push_back(count);
+  std::size_t least_kept = 0;
+  const auto max_faces = static_cast<std::size_t>(max_edge_faces);
+  if (from == FeatureClass::kEdge && max_faces > 0 && face_counts.size() > max_faces) {
+    const auto last = face_counts.begin() + static_cast<std::ptrdiff_t>(max_faces - 1);
+    std::nth_element(face_counts.begin(), last, face_counts.end(), std::greater<>());
+    least_kept = *last;
+  }
   for (const auto& [other, count] : counts) {
     const bool weak_face = from == FeatureClass::kEdge &&
                            region_classes[other - 1] == FeatureClass::kFace &&
-                           static_cast<double>(count) <
-                             min_face_contact * static_cast<double>(strongest_face);
+                           (static_cast<double>(count) <
+                              min_face_contact * static_cast<double>(strongest_face) ||
+                            count < least_kept);
     if (!weak_face)
       pairs.emplace_back(std::min(label, other), std::max(label, other));
   }
@@ -258,7 +276,7 @@ dilationArcs(const VoxelBand& band,
     });
     std::sort(found.begin(), found.end());
     appendContactArcs(label, from, found, region_classes, parameters.min_face_contact,
-                      pairs);
+                      parameters.max_edge_faces, pairs);
   }
   return pairs;
 }
@@ -301,6 +319,8 @@ TopologyGraph::validate(const TopologyGraphParameters& p)
   checkRange("min_face_contact", p.min_face_contact,
              TopologyGraphParameters::kMinFaceContactRange,
              "fraction of the strongest face contact");
+  checkRange("max_edge_faces", p.max_edge_faces,
+             TopologyGraphParameters::kMaxEdgeFacesRange, "faces, 0 = no limit");
 }
 
 TopologyGraph

@@ -74,6 +74,15 @@ struct TopologyGraphParameters
    * ends, within the dilation. Range [0, 1]; 0 keeps every face reached. Default 0.2.
    */
   double min_face_contact = 0.2;
+  /** \brief Faces an edge is joined to at most, after min_face_contact: the ones it
+   * reaches with the most cells (all those tied with the last one kept). A crease of
+   * a manifold part lies between two faces; a third face reached with a fair share of
+   * contact leaked around the corner at the edge's end (sparse clouds: 10,000 points,
+   * cells 4 times finer than the point spacing, where the icosahedron's and the U
+   * prism's edges reached a third face with 22-55% of the second's contact). Range
+   * [0, kMaxDilationRadius]; 0 = no limit (non-manifold parts, e.g. two solids
+   * sharing an edge). Default 2. */
+  int max_edge_faces = 2;
   /** \brief Also join a vertex to every face of its edges (vertex-edge and edge-face
    * arcs found as above): a corner lies on the faces of its edges even where its small
    * region does not reach their cells. Default true; false keeps the dilation rule
@@ -86,6 +95,8 @@ struct TopologyGraphParameters
   static constexpr ParameterRange<int> kDilationRadiusRange{0, kMaxDilationRadius};
   /** \brief [0, 1], a fraction. */
   static constexpr ParameterRange<double> kMinFaceContactRange{0.0, 1.0};
+  /** \brief [0, 1000] faces; 0 = no limit. */
+  static constexpr ParameterRange<int> kMaxEdgeFacesRange{0, 1000};
 };
 
 /** \brief Metadata written with TopologyGraph::writeJson. */
