@@ -2,8 +2,9 @@
 // vertex / edge / face, and prints the topology graph: which vertices and faces each
 // edge joins.
 //
-//   label_features cloud.pcd [resolution]     (resolution: cells along the longest
-//   side)
+//   label_features cloud.pcd [resolution [graph.json]]   (resolution: cells along
+//   the longest side, 0 = automatic; graph.json: also write the graph, with the
+//   warnings, notes and the resolution's reason, as the visfeat tool does)
 
 #include <visfeat/visibility_feature_estimation.h>
 
@@ -12,12 +13,13 @@
 
 #include <cstdlib>
 #include <iostream>
+#include <string>
 
 int
 main(int argc, char** argv)
 {
   if (argc < 2) {
-    std::cerr << "usage: " << argv[0] << " cloud.pcd [resolution]\n";
+    std::cerr << "usage: " << argv[0] << " cloud.pcd [resolution [graph.json]]\n";
     return 1;
   }
   auto cloud = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
@@ -59,6 +61,16 @@ main(int argc, char** argv)
     for (std::uint32_t f : graph.facesOfEdge(id))
       std::cout << " " << f;
     std::cout << "\n";
+  }
+  for (const std::string& warning : est.getWarnings())
+    std::cout << "warning: " << warning << "\n";
+  if (argc > 3) {
+    // JSON (or DOT, by the extension) with what a reader needs to trust it
+    visfeat::GraphMetadata meta{
+      est.getGrid(), {}, argv[1], est.getWarnings(), est.getNotes()};
+    meta.parameters = {{"resolution", std::to_string(est.getGrid().dims.maxCoeff())},
+                       {"resolution_reason", est.getResolutionEstimate().reason}};
+    graph.writeFile(argv[3], meta);
   }
   return 0;
 }

@@ -459,6 +459,34 @@ TEST(TangentPlanes, MeasureTheNoiseOfTheFaces)
   }
 }
 
+TEST(TangentPlanes, TheCurvatureOfASparseCurvedFaceIsNotNoise)
+{
+  // A cylinder of radius 3 sampled about 0.43 apart (11 neighbours within about 0.8):
+  // a plane's residual reads the curvature (about 0.8^2 / 4 / 6 = 0.027), the
+  // quadric's only its fourth-order rest (about 0.002 at the rim); Gaussian noise
+  // still reads about 0.85 sigma.
+  std::mt19937 rng(23);
+  std::uniform_real_distribution<double> angle(0.0, 2.0 * std::acos(-1.0)),
+    height(0.0, 20.0);
+  std::vector<Eigen::Vector3d> clean;
+  for (int i = 0; i < 2000; ++i) {
+    const double a = angle(rng);
+    clean.emplace_back(3.0 * std::cos(a), 3.0 * std::sin(a), height(rng));
+  }
+  const int k = visfeat::LocalTriangleParameters{}.neighbours + 1;
+  double noise = -1.0;
+  visfeat::tangentPlanes(clean, nearest(clean, k), k, 2, &noise);
+  EXPECT_LT(noise, 0.005);
+  const double sigma = 0.05;
+  std::normal_distribution<double> gauss(0.0, sigma);
+  std::vector<Eigen::Vector3d> noisy = clean;
+  for (Eigen::Vector3d& p : noisy)
+    p += Eigen::Vector3d(gauss(rng), gauss(rng), gauss(rng));
+  visfeat::tangentPlanes(noisy, nearest(noisy, k), k, 1, &noise);
+  EXPECT_GT(noise, 0.7 * sigma);
+  EXPECT_LT(noise, 1.0 * sigma);
+}
+
 /** The sparse fill with its creases rebuilt, as localTriangleCells() puts it together:
  * the local triangles (chords lifted) and the crease strips, the strips checked to be
  * the same on one thread as on two. */

@@ -137,7 +137,8 @@ fitView(const pcl::PointCloud<visfeat::PointVisibility>& cloud,
         const Eigen::Vector3d& direction,
         int width,
         int height,
-        double right_reserve)
+        double right_reserve,
+        const Eigen::Vector3d* up_hint)
 {
   View v;
   const Eigen::Vector3d d = direction.normalized();
@@ -167,6 +168,11 @@ fitView(const pcl::PointCloud<visfeat::PointVisibility>& cloud,
   }
   if (up.z() < 0.0)
     up = -up;
+  if (up_hint != nullptr) {
+    const Eigen::Vector3d across = *up_hint - up_hint->dot(d) * d;
+    if (across.norm() > 1e-6 * up_hint->norm())
+      up = across.normalized();
+  }
   const Eigen::Vector3d right = up.cross(d);
 
   // Centre the projected box, then the nearest distance that keeps every point inside
@@ -219,6 +225,20 @@ pointSize(double cell_size,
     cell_size * std::sqrt(static_cast<double>(band_cells) / points);
   const double pixels = 2.2 * spacing * view.pixels_per_unit;
   return static_cast<float>(std::clamp(std::round(pixels), 2.0, 10.0));
+}
+
+bool
+sensorView(const pcl::PointCloud<visfeat::PointVisibility>& cloud,
+           Eigen::Vector3d& direction,
+           Eigen::Vector3d& up)
+{
+  if (cloud.height <= 1)
+    return false;
+  const Eigen::Matrix3d turn =
+    cloud.sensor_orientation_.toRotationMatrix().cast<double>();
+  direction = -turn.col(2);
+  up = -turn.col(1);
+  return true;
 }
 
 } // namespace visfeat_tools

@@ -46,14 +46,25 @@ struct View
 
 /** \brief The View of the finite points of `cloud` (bounding box lo-hi) from
  * `direction` in a width x height frame whose right `right_reserve` (a fraction of the
- * half width) is kept free. */
+ * half width) is kept free. With `up` (not parallel to `direction`), the screen's up
+ * is that direction (an organized cloud: its sensor's up) instead of the choice
+ * above. */
 View fitView(const pcl::PointCloud<visfeat::PointVisibility>& cloud,
              const Eigen::Vector3d& lo,
              const Eigen::Vector3d& hi,
              const Eigen::Vector3d& direction,
              int width,
              int height,
-             double right_reserve);
+             double right_reserve,
+             const Eigen::Vector3d* up = nullptr);
+
+/** \brief For an organized cloud (height > 1), its sensor's view: the direction from
+ * the scene towards the sensor (the sensor looks along its +z, sensor_orientation_)
+ * and the sensor's up (its -y: image rows run down +y). False for an unorganized
+ * cloud. */
+bool sensorView(const pcl::PointCloud<visfeat::PointVisibility>& cloud,
+                Eigen::Vector3d& direction,
+                Eigen::Vector3d& up);
 
 /** \brief Point size in pixels: about 2.2 times the estimated point spacing on screen,
  * so that the surfaces look closed, 2-10. Spacing: sqrt(area / points), the area

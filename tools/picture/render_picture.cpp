@@ -402,9 +402,15 @@ renderPicture(const pcl::PointCloud<visfeat::PointVisibility>& cloud,
     error = "cannot render a picture: the cloud has no finite points";
     return false;
   }
-  const View view =
-    fitView(cloud, lo, hi, chooseDirection(cloud), options.width, options.height,
-            options.mode == PictureMode::kRadius ? 0.18 : 0.0);
+  // An organized cloud is seen as its sensor saw it; any other from the direction that
+  // shows the most faces. Both pictures of a run share the camera.
+  Eigen::Vector3d direction, up;
+  const bool organized = sensorView(cloud, direction, up);
+  if (!organized)
+    direction = chooseDirection(cloud);
+  const View view = fitView(cloud, lo, hi, direction, options.width, options.height,
+                            options.mode == PictureMode::kRadius ? 0.18 : 0.0,
+                            organized ? &up : nullptr);
   const float size =
     pointSize(options.cell_size, options.band_cells, finite_points, view);
   const double diagonal = std::max((hi - lo).norm(), 1e-9);

@@ -13,6 +13,25 @@
 #include <string>
 
 namespace visfeat {
+namespace detail {
+
+/** Whether compute() warns that the points are rough: the band's roughness outside
+ * noise mode (kNoisyRoughness) or the noise of the points a fill measured
+ * (kNoisyPointNoise). Finer cells make a rough band rougher, so the other warnings
+ * then point to that one instead of to a finer resolution. */
+inline bool
+roughPoints(double band_roughness, bool noise_mode, double point_noise)
+{
+  return (!noise_mode && band_roughness > kNoisyRoughness) ||
+         point_noise > kNoisyPointNoise;
+}
+
+/** The advice of a warning that finer cells would help, unless the points are rough. */
+constexpr const char* kRoughPointsAdvice =
+  "the points are rough (see the warning that they scatter), and finer cells would "
+  "make that worse: follow that warning first";
+
+} // namespace detail
 
 template <typename PointInT, typename PointOutT>
 void
@@ -30,6 +49,8 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::checkResults(const Results& re
     if (region.feature_class == FeatureClass::kFace)
       ++faces;
   const int resolution = run.resolution.resolution;
+  const bool rough =
+    detail::roughPoints(band.roughness(), noise_mode_, run.point_noise);
   const double core_share = band.empty() ? 0.0 : double(cores) / double(band.size());
   const double repair_share =
     band.empty() ? 0.0 : double(band.repairCellCount()) / double(band.size());
@@ -53,21 +74,31 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::checkResults(const Results& re
       << ": " << cores << " of " << band.size() << " band cells reach min_radius "
       << min_radius << " rings (a face core needs them); the features lie closer than "
       << 2 * min_radius << " cells at resolution " << resolution
-      << " or the band is broken: raise the resolution";
-    if (run.fill == SurfaceFill::kPoints && run.resolution.spacing > 0.0)
-      w << " and fill the band between the points (fill 'triangles')";
-    w << ", or lower min_radius";
-    if (!noise_mode_)
-      w << kNoisyScanAdvice;
+      << " or the band is broken: ";
+    if (rough) {
+      w << detail::kRoughPointsAdvice;
+    } else {
+      w << "raise the resolution";
+      if (run.fill == SurfaceFill::kPoints && run.resolution.spacing > 0.0)
+        w << " and fill the band between the points (fill 'triangles')";
+      w << ", or lower min_radius";
+      if (!noise_mode_)
+        w << kNoisyScanAdvice;
+    }
     run.warnings.push_back(w.str());
   } else if (core_share < kMinCoreShare) {
     w << "only " << std::round(1000.0 * core_share) / 10.0
       << "% of the band's cells reach"
       << " min_radius " << min_radius << " rings: most of the surface lies within "
       << min_radius << " cells of a feature at resolution " << resolution
-      << ", so small faces and close edges merge or vanish; raise the resolution";
-    if (!noise_mode_)
-      w << kNoisyScanAdvice;
+      << ", so small faces and close edges merge or vanish; ";
+    if (rough) {
+      w << detail::kRoughPointsAdvice;
+    } else {
+      w << "raise the resolution";
+      if (!noise_mode_)
+        w << kNoisyScanAdvice;
+    }
     run.warnings.push_back(w.str());
   }
   if (!noise_mode_ && band.roughness() > kNoisyRoughness) {

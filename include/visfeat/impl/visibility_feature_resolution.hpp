@@ -85,17 +85,17 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::chooseResolution(
                         surface_fill_ == SurfaceFill::kOrganized ||
                         (surface_fill_ == SurfaceFill::kMesh && mesh_);
   const int from_density = run.resolution.resolution;
-  if (mesh_ && may_fill && from_density > kTopologyResolution) {
+  if (mesh_ && may_fill) {
     // A mesh's triangles give the band at any resolution: the density of the points
     // sampled on it says nothing about the features (a public icosahedron mesh sampled
     // to 1,000,000 points gave 322 cells and 12/28/20; 256 gives 12/30/20).
     std::ostringstream reason;
-    reason
-      << run.resolution.reason << "; the points alone support " << from_density
-      << ", lowered to " << kTopologyResolution
-      << " for the topology (the mesh is rasterised exactly, so the points' density"
-         " does not set the cells; features about "
-      << 2 * getMinRadius() << " cells apart separate)";
+    reason << "a mesh: " << kTopologyResolution << " cells for the topology (features "
+           << "about " << 2 * getMinRadius() << " cells apart separate, "
+           << kTopologyResolution << " suits parts whose faces span 1/8 of their "
+           << "size); its triangles give the band at any resolution, so the points "
+              "sampled on it do not set the cells (their "
+           << run.resolution.reason << " would support " << from_density << ")";
     run.resolution.resolution = kTopologyResolution;
     run.resolution.reason = reason.str();
     run.search_cap = std::min(kMaxSearchResolution, GridSpec::kMaxResolution);
@@ -106,19 +106,15 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::chooseResolution(
     // the fill lets cells be finer than the points, up to kMaxFillCellsPerSpacing
     const double supported = kMaxFillCellsPerSpacing * run.resolution.extent /
                              std::max(run.resolution.spacing, 1e-300);
-    const int raised = mesh_ ? kTopologyResolution
-                             : static_cast<int>(std::min<double>(
-                                 kTopologyResolution, std::floor(supported)));
-    // a mesh always gets the topology's resolution (its band is exact at any); a
-    // cloud only where the fill makes a worthwhile difference
-    if (mesh_ || raised >= kMinFillRaise * from_density) {
+    const int raised =
+      static_cast<int>(std::min<double>(kTopologyResolution, std::floor(supported)));
+    // a cloud only where the fill makes a worthwhile difference
+    if (raised >= kMinFillRaise * from_density) {
       std::ostringstream reason;
       reason << run.resolution.reason << "; the points alone support " << from_density
              << ", raised to " << raised << " for the topology ("
-             << (mesh_ ? "the mesh is rasterised exactly"
-                       : "the band is filled between the points, at most " +
-                           std::to_string(int(kMaxFillCellsPerSpacing)) +
-                           " cells a spacing")
+             << "the band is filled between the points, at most "
+             << int(kMaxFillCellsPerSpacing) << " cells a spacing"
              << "; features about " << 2 * getMinRadius() << " cells apart separate, "
              << kTopologyResolution
              << " suits parts whose faces span 1/8 of their size)";
@@ -254,14 +250,21 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::searchResolution(
     if (next == 0) {
       std::ostringstream w;
       w << found.str() << ": they merge into the edges around them; the resolution "
-        << "stays at " << current << ", "
-        << (step >= kMaxSearchSteps ? "the search's last step" : run.search_cap_reason)
-        << "; "
-        << (run.fill == SurfaceFill::kPoints && run.search_cap <= current
-              ? "fill the band between the points (fill 'triangles') so that the "
-                "resolution can rise"
-              : "set a finer resolution")
-        << " to resolve them, or lower min_radius";
+        << "stays at " << current << ": ";
+      if (step >= kMaxSearchSteps)
+        w << "the search's last step";
+      else
+        w << "the search goes up to " << run.search_cap << ", "
+          << run.search_cap_reason;
+      w << "; ";
+      if (detail::roughPoints(results.band.roughness(), noise_mode_, run.point_noise))
+        w << detail::kRoughPointsAdvice;
+      else
+        w << (run.fill == SurfaceFill::kPoints && run.search_cap <= current
+                ? "fill the band between the points (fill 'triangles') so that the "
+                  "resolution can rise"
+                : "set a finer resolution")
+          << " to resolve them, or lower min_radius";
       run.warnings.push_back(w.str());
       break;
     }

@@ -108,4 +108,45 @@ TEST(PictureCamera, WithoutPlanarFacesTheDefault)
     << d.transpose();
 }
 
+TEST(PictureCamera, AnOrganizedCloudIsSeenFromItsSensor)
+{
+  // a 40 x 30 depth image of a wall 2 units ahead of a sensor at the origin, turned
+  // 90 degrees about its z axis (its image rows then run along world -x)
+  Cloud cloud;
+  cloud.width = 40;
+  cloud.height = 30;
+  for (int row = 0; row < 30; ++row)
+    for (int col = 0; col < 40; ++col) {
+      visfeat::PointVisibility q;
+      q.x = static_cast<float>(0.05 * (col - 20));
+      q.y = static_cast<float>(0.05 * (row - 15));
+      q.z = 2.0f;
+      q.label = 1;
+      q.feature_class = static_cast<std::uint8_t>(visfeat::FeatureClass::kFace);
+      cloud.push_back(q);
+    }
+  cloud.width = 40;
+  cloud.height = 30;
+  cloud.sensor_orientation_ =
+    Eigen::Quaternionf(Eigen::AngleAxisf(float(M_PI / 2), Eigen::Vector3f::UnitZ()));
+  Eigen::Vector3d direction, up;
+  ASSERT_TRUE(visfeat_tools::sensorView(cloud, direction, up));
+  EXPECT_TRUE(direction.isApprox(Eigen::Vector3d(0, 0, -1), 1e-6)) << direction;
+  EXPECT_TRUE(up.isApprox(Eigen::Vector3d(1, 0, 0), 1e-6)) << up; // -(turned y)
+  const Eigen::Vector3d lo(-1, -0.75, 2), hi(0.95, 0.7, 2);
+  const visfeat_tools::View view =
+    visfeat_tools::fitView(cloud, lo, hi, direction, 800, 600, 0.0, &up);
+  EXPECT_TRUE(view.up.isApprox(up, 1e-6)) << view.up;
+  EXPECT_LT(view.position.z(), 2.0); // on the sensor's side of the wall
+  // without the hint, the major axis is horizontal and up points to +z or sideways
+  const visfeat_tools::View free_view =
+    visfeat_tools::fitView(cloud, lo, hi, direction, 800, 600, 0.0);
+  EXPECT_FALSE(free_view.up.isApprox(up, 1e-3)) << free_view.up;
+  // an unorganized cloud has no sensor view
+  Cloud flat = cloud;
+  flat.width = static_cast<std::uint32_t>(flat.size());
+  flat.height = 1;
+  EXPECT_FALSE(visfeat_tools::sensorView(flat, direction, up));
+}
+
 } // namespace
