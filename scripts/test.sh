@@ -9,7 +9,7 @@
 #                                20 minutes: invariance (every model under 20
 #                                rotations and in survey coordinates, 4-13 minutes on
 #                                2 cores) and extended (the noisy models' rotations 2
-#                                and 3, the cube and box meshes at 1024, the whole
+#                                and 3, the meshes at 1024, the whole
 #                                maps with noise or a cap of 24: ~7 minutes)
 #   scripts/test.sh --invariance the same as --full (its older name)
 # Warnings are errors. Exits non-zero on any failure (with --fuzz: a crash, a hang
