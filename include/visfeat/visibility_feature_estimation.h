@@ -520,6 +520,10 @@ private:
                    const Run& run,
                    const PointCloudIn& surface,
                    PointCloudOut& output) const;
+  /** The band cell of input point `index` (kNoCell for a non-finite point): the
+   * band's own record for the points of the band's cloud (noise mode's smoothed
+   * surface), else the cell the input point falls in. */
+  CellId bandCellOf(const VoxelBand& band, std::size_t index) const;
   /** Last step of the labelling: a vertex region that no point took
    * (pointlessVertices) claims the point nearest to its cells within
    * kCornerClaimDistances x point_feature_distance that is not another vertex's. */

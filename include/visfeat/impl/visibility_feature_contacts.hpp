@@ -76,15 +76,10 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::addContactCreases(
   std::vector<char> fresh(regions.size() + 1, 1); // labels of the new regions
   for (const std::uint32_t label : renumbered)
     fresh[label] = 0;
-  const GridSpec& grid = results.band.grid();
   for (std::size_t i = 0; i < output.size(); ++i) {
     PointOutT& p = output[i];
     const auto index = static_cast<std::size_t>((*indices_)[i]);
-    CellId cell = kNoCell;
-    if (pcl::isXYZFinite((*input_)[index]))
-      cell = fake_surface_
-               ? results.band.pointCell()[index]
-               : results.band.find(grid.cellOf(Eigen::Vector3d(p.x, p.y, p.z)));
+    const CellId cell = bandCellOf(results.band, index);
     std::uint32_t label = p.label == 0 ? 0 : renumbered[p.label];
     if (cell != kNoCell) {
       const std::uint32_t now = cell_labels[static_cast<std::size_t>(cell)];

@@ -258,37 +258,46 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::labelPoints(
   std::atomic<bool> dense{true};
   // Points are independent: chunks of them on the map's threads.
   constexpr std::size_t kPointsPerChunk = 4096;
-  parallelFor(
-    indices_->size(), run.visibility.threads, kPointsPerChunk,
-    [&](std::size_t begin, std::size_t end) {
-      bool chunk_dense = true;
-      for (std::size_t i = begin; i < end; ++i) {
-        const auto index = static_cast<std::size_t>((*indices_)[i]);
-        const PointInT& p = (*input_)[index];
-        // The point as the band saw it (smoothed in noise mode) and its cell: the
-        // band's own record for points of the band's cloud, else the cell it falls in.
-        const PointInT& seen = fake_surface_ ? surface[index] : p;
-        CellId cell = kNoCell;
-        if (pcl::isXYZFinite(p))
-          cell = fake_surface_
-                   ? results.band.pointCell()[index]
-                   : results.band.find(grid.cellOf(Eigen::Vector3d(p.x, p.y, p.z)));
-        PointOutT& out = output[i];
-        out.x = p.x;
-        out.y = p.y;
-        out.z = p.z;
-        out.visibility_radius =
-          cell == kNoCell ? nan : static_cast<float>(results.map.radius(cell));
-        const PointLabel label = labeling.labelOf(
-          grid.toCellUnits(Eigen::Vector3d(seen.x, seen.y, seen.z)), cell);
-        out.label = label.label;
-        out.feature_class = static_cast<std::uint8_t>(label.feature_class);
-        chunk_dense = chunk_dense && cell != kNoCell;
-      }
-      if (!chunk_dense)
-        dense = false;
-    });
+  parallelFor(indices_->size(), run.visibility.threads, kPointsPerChunk,
+              [&](std::size_t begin, std::size_t end) {
+                bool chunk_dense = true;
+                for (std::size_t i = begin; i < end; ++i) {
+                  const auto index = static_cast<std::size_t>((*indices_)[i]);
+                  const PointInT& p = (*input_)[index];
+                  // The point as the band saw it (smoothed in noise mode) and its cell:
+                  // the band's own record for points of the band's cloud, else the cell
+                  // it falls in.
+                  const PointInT& seen = fake_surface_ ? surface[index] : p;
+                  const CellId cell = bandCellOf(results.band, index);
+                  PointOutT& out = output[i];
+                  out.x = p.x;
+                  out.y = p.y;
+                  out.z = p.z;
+                  out.visibility_radius =
+                    cell == kNoCell ? nan
+                                    : static_cast<float>(results.map.radius(cell));
+                  const PointLabel label = labeling.labelOf(
+                    grid.toCellUnits(Eigen::Vector3d(seen.x, seen.y, seen.z)), cell);
+                  out.label = label.label;
+                  out.feature_class = static_cast<std::uint8_t>(label.feature_class);
+                  chunk_dense = chunk_dense && cell != kNoCell;
+                }
+                if (!chunk_dense)
+                  dense = false;
+              });
   output.is_dense = dense;
+}
+
+template <typename PointInT, typename PointOutT>
+CellId
+VisibilityFeatureEstimation<PointInT, PointOutT>::bandCellOf(const VoxelBand& band,
+                                                             std::size_t index) const
+{
+  const PointInT& p = (*input_)[index];
+  if (!pcl::isXYZFinite(p))
+    return kNoCell;
+  return fake_surface_ ? band.pointCell()[index]
+                       : band.find(band.grid().cellOf(Eigen::Vector3d(p.x, p.y, p.z)));
 }
 
 template <typename PointInT, typename PointOutT>
@@ -341,12 +350,8 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::claimCornerPoints(
       continue; // another vertex's point stays its own
     // the point as the band saw it, and its cell (as in labelPoints)
     const auto index = static_cast<std::size_t>((*indices_)[i]);
-    if (!pcl::isXYZFinite((*input_)[index]))
-      continue;
+    const CellId cell = bandCellOf(band, index);
     const PointInT& p = fake_surface_ ? surface[index] : (*input_)[index];
-    const CellId cell = fake_surface_
-                          ? band.pointCell()[index]
-                          : band.find(grid.cellOf(Eigen::Vector3d(p.x, p.y, p.z)));
     const auto [first, last] = vertices_near.equal_range(cell);
     if (cell == kNoCell || first == last)
       continue;

@@ -170,13 +170,16 @@ appendContactArcs(std::uint32_t label,
   for (const auto& [other, count] : counts)
     if (region_classes[other - 1] == FeatureClass::kFace)
       strongest_face = std::max(strongest_face, count);
+  const auto fairFace = [&](std::uint32_t other, std::size_t count) {
+    return region_classes[other - 1] == FeatureClass::kFace &&
+           static_cast<double>(count) >=
+             min_face_contact * static_cast<double>(strongest_face);
+  };
   // A manifold edge bounds two faces: beyond the fair share, an edge keeps the
   // max_edge_faces faces it reaches most (all those tied with the last one kept).
   std::vector<std::size_t> face_counts;
   for (const auto& [other, count] : counts)
-    if (region_classes[other - 1] == FeatureClass::kFace &&
-        static_cast<double>(count) >=
-          min_face_contact * static_cast<double>(strongest_face))
+    if (fairFace(other, count))
       face_counts.push_back(count);
   std::size_t least_kept = 0;
   const auto max_faces = static_cast<std::size_t>(max_edge_faces);
@@ -188,9 +191,7 @@ appendContactArcs(std::uint32_t label,
   for (const auto& [other, count] : counts) {
     const bool weak_face = from == FeatureClass::kEdge &&
                            region_classes[other - 1] == FeatureClass::kFace &&
-                           (static_cast<double>(count) <
-                              min_face_contact * static_cast<double>(strongest_face) ||
-                            count < least_kept);
+                           (!fairFace(other, count) || count < least_kept);
     if (!weak_face)
       pairs.emplace_back(std::min(label, other), std::max(label, other));
   }
