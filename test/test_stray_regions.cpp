@@ -1,6 +1,7 @@
 // strayRegionMerge: vertex regions along an edge instead of at its ends join their
-// edge or the face of their edges, face specks at a corner join the corner; ends of
-// edges, T-junctions, corners and faces bounded by edges stay.
+// edge or the face of their edges, a corner split in two is joined, face specks at a
+// corner join the corner; ends of edges, T-junctions, corners (of a short crease, of a
+// lens) and faces bounded by edges stay.
 
 #include <visfeat/core/band/voxel_band.h>
 #include <visfeat/core/common/feature_class.h>
@@ -276,6 +277,101 @@ TEST(StrayRegions, ABlobBesideACornersCreasesJoinsTheCorner)
   Labels expected = identity(14);
   expected[14] = 1;
   EXPECT_EQ(sheet.strayMerge(), expected);
+}
+
+/** Corner V4 (x, y <= 2) with crease E3 up (x <= 1) to V7 and crease E2 along y <= 1
+ * to V6; beside the corner, on E2's line, a corner piece V5 (x 4) and a crease piece
+ * E8 (x 3) between the two: V4 and V5 each end E8, and share it and E2 (which goes on
+ * to V6; dilation radius 3, so that E2 reaches V4 across the pieces), so they are one
+ * corner split in two: V5 and E8 join V4, the larger. */
+TEST(StrayRegions, ACornerSplitInTwoIsOneCorner)
+{
+  const std::vector<FeatureClass> classes{kF, kE, kE, kV, kV, kV, kV, kE};
+  const Sheet sheet(
+    classes,
+    [](int x, int y) -> std::uint32_t {
+      if (x <= 2 && y <= 2)
+        return 4;
+      if (y <= 1 && x == 3)
+        return 8;
+      if (y <= 1 && x == 4)
+        return 5;
+      if (y <= 1)
+        return x >= 36 ? 6 : 2;
+      if (x <= 1)
+        return y >= 36 ? 7 : 3;
+      return 1;
+    },
+    3);
+  const std::vector<std::uint32_t> v4 = sheet.graph.neighbours(4, kE);
+  const std::vector<std::uint32_t> v5 = sheet.graph.neighbours(5, kE);
+  ASSERT_NE(std::find(v4.begin(), v4.end(), 2u), v4.end());
+  ASSERT_NE(std::find(v5.begin(), v5.end(), 2u), v5.end());
+  ASSERT_EQ(sheet.graph.verticesOfEdge(8), (std::vector<std::uint32_t>{4, 5}));
+  Labels expected = identity(8);
+  expected[5] = 4;
+  expected[8] = 4;
+  EXPECT_EQ(sheet.strayMerge(), expected);
+  EXPECT_EQ(visfeat::splitCornerMerge(sheet.graph), expected);
+}
+
+/** Corners V4 (x <= 2) and V5 (x 9..11) at the ends of a short crease E8 (y <= 1, x
+ * 3..8), each with creases of its own (E3 up from V4 to V7, E9 up from V5 to V10, E2
+ * on from V5 to V6): two corners that share one edge (a chamfer's) both stay. */
+TEST(StrayRegions, TwoCornersOfAShortCreaseStay)
+{
+  const std::vector<FeatureClass> classes{kF, kE, kE, kV, kV, kV, kV, kE, kE, kV, kF};
+  const Sheet sheet(classes, [](int x, int y) -> std::uint32_t {
+    if (x <= 2 && y <= 2)
+      return 4;
+    if (in(x, 9, 11) && y <= 2)
+      return 5;
+    if (y <= 1)
+      return x <= 8 ? 8 : x >= 36 ? 6 : 2;
+    if (x <= 1)
+      return y >= 36 ? 7 : 3;
+    if (in(x, 9, 10))
+      return y >= 36 ? 10 : 9;
+    return x < 9 ? 1 : 11;
+  });
+  ASSERT_EQ(sheet.graph.verticesOfEdge(8), (std::vector<std::uint32_t>{4, 5}));
+  EXPECT_EQ(sheet.strayMerge(), identity(11));
+  EXPECT_EQ(visfeat::splitCornerMerge(sheet.graph), identity(11));
+}
+
+/** V4 (x <= 2) and V5 (x >= 30) joined by two creases, E2 (y 0..1) and E3 (y 10..11),
+ * that go nowhere else: the ends of a lens, two corners; both stay. */
+TEST(StrayRegions, TheTwoEndsOfALensStay)
+{
+  const std::vector<FeatureClass> classes{kF, kE, kE, kV, kV, kF};
+  const Sheet sheet(classes, [](int x, int y) -> std::uint32_t {
+    if (y <= 11 && (x <= 2 || x >= 30))
+      return x <= 2 ? 4 : 5;
+    if (y <= 1)
+      return 2;
+    if (in(y, 10, 11))
+      return 3;
+    return y < 10 ? 1 : 6;
+  });
+  ASSERT_EQ(sheet.graph.verticesOfEdge(2), (std::vector<std::uint32_t>{4, 5}));
+  ASSERT_EQ(sheet.graph.verticesOfEdge(3), (std::vector<std::uint32_t>{4, 5}));
+  EXPECT_EQ(sheet.strayMerge(), identity(6));
+}
+
+/** splitCornerMerge is the split-corner rule alone: a blob beside a crease (which
+ * strayRegionMerge joins to the crease) stays. */
+TEST(StrayRegions, TheSplitCornerRuleAloneLeavesStrayVertices)
+{
+  const std::vector<FeatureClass> classes{kF, kF, kE, kV, kV, kV};
+  const Sheet sheet(classes, [](int x, int y) -> std::uint32_t {
+    if (in(y, 19, 20))
+      return x <= 3 ? 4 : x >= 36 ? 5 : 3;
+    if (in(x, 17, 19) && in(y, 16, 18))
+      return 6;
+    return y < 19 ? 1 : 2;
+  });
+  ASSERT_NE(sheet.strayMerge(), identity(6));
+  EXPECT_EQ(visfeat::splitCornerMerge(sheet.graph), identity(6));
 }
 
 } // namespace

@@ -551,6 +551,9 @@ private:
    * no edge between them anywhere, get an edge region along the crease
    * (locateContactCreases()); cells, points, graph and crease angles follow. */
   void addContactCreases(Results& results, const Run& run, PointCloudOut& output) const;
+  /** Last: two vertex regions that share two edges, one going on to a third vertex,
+   * are one corner (splitCornerMerge; a contact corner beside a corner). */
+  void joinSplitCorners(Results& results, const Run& run, PointCloudOut& output) const;
 
   bool fail(const std::string& message);
 

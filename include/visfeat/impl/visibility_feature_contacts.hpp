@@ -1,5 +1,6 @@
 // VisibilityFeatureEstimation (not for inclusion on its own): edges along the creases
-// where two faces touch without an edge region between them.
+// where two faces touch without an edge region between them, and the corners split in
+// two that their corners leave.
 #pragma once
 
 #include <visfeat/core/graph/contact_creases.h>
@@ -7,6 +8,7 @@
 
 #include <array>
 #include <cmath>
+#include <limits>
 #include <set>
 #include <vector>
 
@@ -109,6 +111,30 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::addContactCreases(
         break;
       }
     }
+}
+
+template <typename PointInT, typename PointOutT>
+void
+VisibilityFeatureEstimation<PointInT, PointOutT>::joinSplitCorners(
+  Results& results, const Run& run, PointCloudOut& output) const
+{
+  if (run.segmentation.raw || !run.segmentation.complete_regions)
+    return;
+  // A contact crease's corner beside the corner its crease runs to (the crease ends
+  // short of it) is one corner split in two (splitCornerMerge). After the corners
+  // claimed their points: the one nearer the true corner keeps its point in the
+  // joined region.
+  std::vector<double> angle_of(results.graph.size() + 1,
+                               std::numeric_limits<double>::quiet_NaN());
+  for (std::uint32_t id = 1; id <= results.graph.size(); ++id)
+    if (results.graph.node(id).feature_class == FeatureClass::kEdge)
+      angle_of[id] = results.graph.node(id).crease_angle;
+  const std::vector<std::uint32_t> joined =
+    applyRegionMerge(results, run, output, splitCornerMerge(results.graph));
+  for (std::size_t label = 1; label < joined.size(); ++label)
+    if (std::isfinite(angle_of[label]) && joined[label] != 0 &&
+        results.graph.node(joined[label]).feature_class == FeatureClass::kEdge)
+      results.graph.setCreaseAngle(joined[label], angle_of[label]);
 }
 
 } // namespace visfeat

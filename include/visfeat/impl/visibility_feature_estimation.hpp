@@ -470,8 +470,9 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::cleanUpRegions(
   // it touches is not one (the faceted boss: a 500-cell facet piece at a corner).
   const std::vector<std::uint32_t> renumbered =
     applyRegionMerge(results, run, output, strayRegionMerge(results.graph));
-  // stray regions join edges, faces or vertices, and no edge joins anything: each
-  // edge keeps its angle under its new label
+  // stray regions join edges, faces or vertices, and an edge joins only a corner (a
+  // piece between a split corner's two parts): each edge that stays keeps its angle
+  // under its new label
   for (std::size_t r = 0; r < angles.size(); ++r) {
     const auto label = static_cast<std::uint32_t>(r + 1);
     const std::uint32_t now = renumbered.empty() ? label : renumbered[label];
@@ -536,6 +537,7 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::computeResults(
   buildGraph(results, run, output);
   cleanUpRegions(results, run, output);
   claimCornerPoints(results, run, *surface, output);
+  joinSplitCorners(results, run, output);
   run.times.graph_ms = detail::millisecondsSince(start);
   checkResults(results, run);
   return results;

@@ -138,7 +138,75 @@ isCornerSpeck(const TopologyGraph& graph, std::uint32_t f, std::uint32_t v)
   return true;
 }
 
+/** Whether edge e is joined to a vertex other than u and v. */
+bool
+reachesOtherVertex(const TopologyGraph& graph,
+                   std::uint32_t e,
+                   std::uint32_t u,
+                   std::uint32_t v)
+{
+  for (const std::uint32_t w : graph.verticesOfEdge(e))
+    if (w != u && w != v)
+      return true;
+  return false;
+}
+
+/** Split corners (see strayRegionMerge) among the vertices that end an edge (`ends`;
+ * the others are stray): into[piece] = corner, and the pieces of crease between them
+ * join the corner too. Returns, per label, whether the region is
+ * such a corner or piece (the stray-vertex rule leaves them alone). */
+std::vector<bool>
+mergeSplitCorners(const TopologyGraph& graph,
+                  const std::vector<bool>& ends,
+                  std::vector<std::uint32_t>& into)
+{
+  const std::size_t n = graph.size();
+  std::vector<bool> split(n + 1, false);
+  for (std::uint32_t u = 1; u <= n; ++u) {
+    if (graph.node(u).feature_class != FeatureClass::kVertex || !ends[u] ||
+        into[u] != u)
+      continue;
+    const std::vector<std::uint32_t> edges = graph.neighbours(u, FeatureClass::kEdge);
+    for (std::uint32_t v = u + 1; v <= n; ++v) {
+      if (graph.node(v).feature_class != FeatureClass::kVertex || !ends[v] ||
+          into[v] != v)
+        continue;
+      std::vector<std::uint32_t> shared;
+      bool leaves = false; // a shared edge goes on to a third vertex
+      for (const std::uint32_t e : graph.neighbours(v, FeatureClass::kEdge))
+        if (std::find(edges.begin(), edges.end(), e) != edges.end()) {
+          shared.push_back(e);
+          leaves = leaves || reachesOtherVertex(graph, e, u, v);
+        }
+      if (shared.size() < 2 || !leaves)
+        continue;
+      const bool u_larger = graph.node(u).cells >= graph.node(v).cells;
+      const std::uint32_t corner = u_larger ? u : v;
+      into[u_larger ? v : u] = corner;
+      split[u] = split[v] = true;
+      for (const std::uint32_t e : shared)
+        if (!reachesOtherVertex(graph, e, u, v))
+          into[e] = corner;
+      if (!u_larger)
+        break; // u joined v
+    }
+  }
+  return split;
+}
+
 } // namespace
+
+std::vector<std::uint32_t>
+splitCornerMerge(const TopologyGraph& graph)
+{
+  std::vector<std::uint32_t> into(graph.size() + 1);
+  std::iota(into.begin(), into.end(), 0u);
+  mergeSplitCorners(graph, vertexEnds(graph), into);
+  for (std::uint32_t& target : into) // pieces join the corner that stays
+    while (into[target] != target)
+      target = into[target];
+  return into;
+}
 
 std::vector<std::uint32_t>
 strayRegionMerge(const TopologyGraph& graph)
@@ -147,8 +215,9 @@ strayRegionMerge(const TopologyGraph& graph)
   std::vector<std::uint32_t> into(n + 1);
   std::iota(into.begin(), into.end(), 0u);
   const std::vector<bool> ends = vertexEnds(graph);
+  const std::vector<bool> split = mergeSplitCorners(graph, ends, into);
   for (std::uint32_t v = 1; v <= n; ++v) {
-    if (graph.node(v).feature_class != FeatureClass::kVertex || ends[v])
+    if (graph.node(v).feature_class != FeatureClass::kVertex || ends[v] || split[v])
       continue;
     const std::vector<std::uint32_t> edges = graph.neighbours(v, FeatureClass::kEdge);
     if (edges.empty())
@@ -168,6 +237,11 @@ strayRegionMerge(const TopologyGraph& graph)
     if (vertices.size() == 1 && isCornerSpeck(graph, f, vertices[0]))
       into[f] = into[vertices[0]];
   }
+  // a stray vertex or speck that joined a corner piece or a piece of crease between
+  // two (corners never join anything: no cycle)
+  for (std::uint32_t r = 1; r <= n; ++r)
+    while (into[into[r]] != into[r])
+      into[r] = into[into[r]];
   return into;
 }
 
