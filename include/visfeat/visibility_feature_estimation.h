@@ -554,6 +554,14 @@ private:
   /** Last: two vertex regions that share two edges, one going on to a third vertex,
    * are one corner (splitCornerMerge; a contact corner beside a corner). */
   void joinSplitCorners(Results& results, const Run& run, PointCloudOut& output) const;
+  /** Then an edge that stops short of its corner is bridged to it (bridgesToCorners;
+   * clouds only). */
+  void
+  bridgeEdgesToCorners(Results& results, const Run& run, PointCloudOut& output) const;
+  /** Points after addRegions(): see addContactCreases(). */
+  void relabelAddedPoints(const Results& results,
+                          PointCloudOut& output,
+                          const std::vector<std::uint32_t>& renumbered) const;
 
   bool fail(const std::string& message);
 

@@ -4,15 +4,53 @@
 #pragma once
 
 #include <visfeat/core/graph/contact_creases.h>
+#include <visfeat/core/graph/edge_bridges.h>
 #include <visfeat/impl/visibility_feature_estimation.hpp>
 
 #include <array>
 #include <cmath>
 #include <limits>
+#include <numeric>
 #include <set>
 #include <vector>
 
 namespace visfeat {
+
+template <typename PointInT, typename PointOutT>
+void
+VisibilityFeatureEstimation<PointInT, PointOutT>::relabelAddedPoints(
+  const Results& results,
+  PointCloudOut& output,
+  const std::vector<std::uint32_t>& renumbered) const
+{
+  const std::vector<std::uint32_t>& cell_labels = results.segmentation.cellLabels();
+  const std::vector<Region>& regions = results.segmentation.regions();
+  // Points: a point of a cell now in a new region takes it when its class ranks
+  // below the region's (face < edge < vertex), the others their region's new label
+  // (a point keeps the label the skeleton gave it).
+  std::vector<char> fresh(regions.size() + 1, 1); // labels of the new regions
+  for (const std::uint32_t label : renumbered)
+    fresh[label] = 0;
+  for (std::size_t i = 0; i < output.size(); ++i) {
+    PointOutT& p = output[i];
+    const auto index = static_cast<std::size_t>((*indices_)[i]);
+    const CellId cell = bandCellOf(results.band, index);
+    std::uint32_t label = p.label == 0 ? 0 : renumbered[p.label];
+    if (cell != kNoCell) {
+      const std::uint32_t now = cell_labels[static_cast<std::size_t>(cell)];
+      const auto point_class = static_cast<FeatureClass>(p.feature_class);
+      if (fresh[now] && (point_class == FeatureClass::kFace ||
+                         (point_class == FeatureClass::kEdge &&
+                          regions[now - 1].feature_class == FeatureClass::kVertex)))
+        label = now;
+    }
+    if (label == 0 && cell != kNoCell)
+      label = cell_labels[static_cast<std::size_t>(cell)];
+    p.label = label;
+    p.feature_class = static_cast<std::uint8_t>(
+      label == 0 ? FeatureClass::kNone : regions[label - 1].feature_class);
+  }
+}
 
 template <typename PointInT, typename PointOutT>
 void
@@ -72,31 +110,10 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::addContactCreases(
   const std::vector<std::uint32_t>& cell_labels = results.segmentation.cellLabels();
   const std::vector<Region>& regions = results.segmentation.regions();
 
-  // Points: a point of a cell now in a new region takes it when its class ranks
-  // below the region's (face < edge < vertex), the others their region's new label
-  // (a point keeps the label the skeleton gave it).
+  relabelAddedPoints(results, output, renumbered);
   std::vector<char> fresh(regions.size() + 1, 1); // labels of the new regions
   for (const std::uint32_t label : renumbered)
     fresh[label] = 0;
-  for (std::size_t i = 0; i < output.size(); ++i) {
-    PointOutT& p = output[i];
-    const auto index = static_cast<std::size_t>((*indices_)[i]);
-    const CellId cell = bandCellOf(results.band, index);
-    std::uint32_t label = p.label == 0 ? 0 : renumbered[p.label];
-    if (cell != kNoCell) {
-      const std::uint32_t now = cell_labels[static_cast<std::size_t>(cell)];
-      const auto point_class = static_cast<FeatureClass>(p.feature_class);
-      if (fresh[now] && (point_class == FeatureClass::kFace ||
-                         (point_class == FeatureClass::kEdge &&
-                          regions[now - 1].feature_class == FeatureClass::kVertex)))
-        label = now;
-    }
-    if (label == 0 && cell != kNoCell)
-      label = cell_labels[static_cast<std::size_t>(cell)];
-    p.label = label;
-    p.feature_class = static_cast<std::uint8_t>(
-      label == 0 ? FeatureClass::kNone : regions[label - 1].feature_class);
-  }
   buildGraph(results, run, output);
   for (std::uint32_t old = 1; old < renumbered.size(); ++old)
     if (renumbered[old] != 0 && std::isfinite(angle_of[old]) &&
@@ -135,6 +152,54 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::joinSplitCorners(
     if (std::isfinite(angle_of[label]) && joined[label] != 0 &&
         results.graph.node(joined[label]).feature_class == FeatureClass::kEdge)
       results.graph.setCreaseAngle(joined[label], angle_of[label]);
+}
+
+template <typename PointInT, typename PointOutT>
+void
+VisibilityFeatureEstimation<PointInT, PointOutT>::bridgeEdgesToCorners(
+  Results& results, const Run& run, PointCloudOut& output) const
+{
+  // Meshes: the resolution search raises the resolution while such gaps are left
+  // (kSearchOnGraphGaps), which separates the features instead of bridging them.
+  if (run.segmentation.raw || !run.segmentation.complete_regions ||
+      run.fill == SurfaceFill::kMesh)
+    return;
+  const std::vector<EdgeBridge> bridges =
+    bridgesToCorners(results.band, results.segmentation.cellLabels(), results.graph,
+                     2.0 * run.segmentation.vertex_reach);
+  if (bridges.empty())
+    return;
+  std::vector<double> angle_of(results.graph.size() + 1,
+                               std::numeric_limits<double>::quiet_NaN());
+  for (std::uint32_t id = 1; id <= results.graph.size(); ++id)
+    angle_of[id] = results.graph.node(id).crease_angle;
+  // each bridge a new edge region, which then joins its edge
+  std::vector<std::vector<CellId>> cells;
+  for (const EdgeBridge& bridge : bridges)
+    cells.push_back(bridge.cells);
+  const std::vector<std::uint32_t> renumbered = results.segmentation.addRegions(
+    cells, std::vector<FeatureClass>(cells.size(), FeatureClass::kEdge));
+  relabelAddedPoints(results, output, renumbered);
+  std::vector<std::uint32_t> into(results.segmentation.regions().size() + 1);
+  std::iota(into.begin(), into.end(), 0u);
+  for (const EdgeBridge& bridge : bridges) {
+    const std::uint32_t added =
+      results.segmentation.cellLabels()[static_cast<std::size_t>(bridge.cells[0])];
+    if (into[added] == added && added != renumbered[bridge.edge])
+      into[added] = renumbered[bridge.edge]; // (a cell two bridges share: the first's)
+  }
+  const std::vector<std::uint32_t> joined =
+    applyRegionMerge(results, run, output, into);
+  if (joined.empty())
+    buildGraph(results, run, output);
+  for (std::uint32_t old = 1; old < renumbered.size(); ++old) {
+    std::uint32_t now = renumbered[old];
+    if (now != 0 && !joined.empty())
+      now = joined[now];
+    if (now != 0 && std::isfinite(angle_of[old]) &&
+        results.graph.node(now).feature_class == FeatureClass::kEdge)
+      results.graph.setCreaseAngle(now, angle_of[old]);
+  }
 }
 
 } // namespace visfeat
