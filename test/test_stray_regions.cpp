@@ -83,16 +83,22 @@ in(int v, int lo, int hi)
 
 /** A crease y 19..20 from corner V4 (x <= 3) to corner V5 (x >= 36) between faces F1
  * (below) and F2 (above); a blob V6 beside it, in F1. */
+std::uint32_t
+blobBesideACrease(int x, int y)
+{
+  if (in(y, 19, 20))
+    return x <= 3 ? 4 : x >= 36 ? 5 : 3;
+  if (in(x, 17, 19) && in(y, 16, 18))
+    return 6;
+  return y < 19 ? 1 : 2;
+}
+
+/** A crease y 19..20 from corner V4 (x <= 3) to corner V5 (x >= 36) between faces F1
+ * (below) and F2 (above); a blob V6 beside it, in F1. */
 TEST(StrayRegions, ABlobBesideACreaseJoinsTheCrease)
 {
   const std::vector<FeatureClass> classes{kF, kF, kE, kV, kV, kV};
-  const Sheet sheet(classes, [](int x, int y) -> std::uint32_t {
-    if (in(y, 19, 20))
-      return x <= 3 ? 4 : x >= 36 ? 5 : 3;
-    if (in(x, 17, 19) && in(y, 16, 18))
-      return 6;
-    return y < 19 ? 1 : 2;
-  });
+  const Sheet sheet(classes, blobBesideACrease);
   ASSERT_EQ(sheet.graph.verticesOfEdge(3).size(),
             3u); // the blob is joined to the crease
   Labels expected = identity(6);
@@ -363,13 +369,7 @@ TEST(StrayRegions, TheTwoEndsOfALensStay)
 TEST(StrayRegions, TheSplitCornerRuleAloneLeavesStrayVertices)
 {
   const std::vector<FeatureClass> classes{kF, kF, kE, kV, kV, kV};
-  const Sheet sheet(classes, [](int x, int y) -> std::uint32_t {
-    if (in(y, 19, 20))
-      return x <= 3 ? 4 : x >= 36 ? 5 : 3;
-    if (in(x, 17, 19) && in(y, 16, 18))
-      return 6;
-    return y < 19 ? 1 : 2;
-  });
+  const Sheet sheet(classes, blobBesideACrease);
   ASSERT_NE(sheet.strayMerge(), identity(6));
   EXPECT_EQ(visfeat::splitCornerMerge(sheet.graph), identity(6));
 }

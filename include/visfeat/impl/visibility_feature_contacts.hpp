@@ -15,6 +15,35 @@
 #include <vector>
 
 namespace visfeat {
+namespace detail {
+
+/** Each region's crease angle, per label (index 0 unused; NaN where not measured, and
+ * for vertices and faces). */
+inline std::vector<double>
+creaseAnglesOf(const TopologyGraph& graph)
+{
+  std::vector<double> angle_of(graph.size() + 1,
+                               std::numeric_limits<double>::quiet_NaN());
+  for (std::uint32_t id = 1; id <= graph.size(); ++id)
+    angle_of[id] = graph.node(id).crease_angle;
+  return angle_of;
+}
+
+/** The angles of creaseAnglesOf() back onto a graph whose labels were renumbered
+ * (`now`: per old label its new one, 0 for none; empty: nothing changed): each
+ * region still an edge keeps its angle. */
+inline void
+restoreCreaseAngles(TopologyGraph& graph,
+                    const std::vector<double>& angle_of,
+                    const std::vector<std::uint32_t>& now)
+{
+  for (std::size_t old = 1; old < now.size() && old < angle_of.size(); ++old)
+    if (now[old] != 0 && std::isfinite(angle_of[old]) &&
+        graph.node(now[old]).feature_class == FeatureClass::kEdge)
+      graph.setCreaseAngle(now[old], angle_of[old]);
+}
+
+} // namespace detail
 
 template <typename PointInT, typename PointOutT>
 void
@@ -88,10 +117,7 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::addContactCreases(
     return;
 
   // the edges' measured turns, kept across the renumbering
-  std::vector<double> angle_of(results.graph.size() + 1,
-                               std::numeric_limits<double>::quiet_NaN());
-  for (std::uint32_t id = 1; id <= results.graph.size(); ++id)
-    angle_of[id] = results.graph.node(id).crease_angle;
+  const std::vector<double> angle_of = detail::creaseAnglesOf(results.graph);
   // the creases as edges, then the corners where they end as vertices
   const std::vector<std::vector<CellId>> corners =
     contactCorners(results.band, results.segmentation.cellLabels(), classes, creases);
@@ -115,10 +141,7 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::addContactCreases(
   for (const std::uint32_t label : renumbered)
     fresh[label] = 0;
   buildGraph(results, run, output);
-  for (std::uint32_t old = 1; old < renumbered.size(); ++old)
-    if (renumbered[old] != 0 && std::isfinite(angle_of[old]) &&
-        results.graph.node(renumbered[old]).feature_class == FeatureClass::kEdge)
-      results.graph.setCreaseAngle(renumbered[old], angle_of[old]);
+  detail::restoreCreaseAngles(results.graph, angle_of, renumbered);
   for (std::size_t k = 0; k < creases.size(); ++k)
     for (const CellId c : creases[k].cells) { // a corner may hold its first cells
       const std::uint32_t label = cell_labels[static_cast<std::size_t>(c)];
@@ -141,17 +164,10 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::joinSplitCorners(
   // short of it) is one corner split in two (splitCornerMerge). After the corners
   // claimed their points: the one nearer the true corner keeps its point in the
   // joined region.
-  std::vector<double> angle_of(results.graph.size() + 1,
-                               std::numeric_limits<double>::quiet_NaN());
-  for (std::uint32_t id = 1; id <= results.graph.size(); ++id)
-    if (results.graph.node(id).feature_class == FeatureClass::kEdge)
-      angle_of[id] = results.graph.node(id).crease_angle;
-  const std::vector<std::uint32_t> joined =
-    applyRegionMerge(results, run, output, splitCornerMerge(results.graph));
-  for (std::size_t label = 1; label < joined.size(); ++label)
-    if (std::isfinite(angle_of[label]) && joined[label] != 0 &&
-        results.graph.node(joined[label]).feature_class == FeatureClass::kEdge)
-      results.graph.setCreaseAngle(joined[label], angle_of[label]);
+  const std::vector<double> angle_of = detail::creaseAnglesOf(results.graph);
+  detail::restoreCreaseAngles(
+    results.graph, angle_of,
+    applyRegionMerge(results, run, output, splitCornerMerge(results.graph)));
 }
 
 template <typename PointInT, typename PointOutT>
@@ -169,10 +185,7 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::bridgeEdgesToCorners(
                      2.0 * run.segmentation.vertex_reach);
   if (bridges.empty())
     return;
-  std::vector<double> angle_of(results.graph.size() + 1,
-                               std::numeric_limits<double>::quiet_NaN());
-  for (std::uint32_t id = 1; id <= results.graph.size(); ++id)
-    angle_of[id] = results.graph.node(id).crease_angle;
+  const std::vector<double> angle_of = detail::creaseAnglesOf(results.graph);
   // each bridge a new edge region, which then joins its edge
   std::vector<std::vector<CellId>> cells;
   for (const EdgeBridge& bridge : bridges)
@@ -192,14 +205,11 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::bridgeEdgesToCorners(
     applyRegionMerge(results, run, output, into);
   if (joined.empty())
     buildGraph(results, run, output);
-  for (std::uint32_t old = 1; old < renumbered.size(); ++old) {
-    std::uint32_t now = renumbered[old];
-    if (now != 0 && !joined.empty())
-      now = joined[now];
-    if (now != 0 && std::isfinite(angle_of[old]) &&
-        results.graph.node(now).feature_class == FeatureClass::kEdge)
-      results.graph.setCreaseAngle(now, angle_of[old]);
-  }
+  std::vector<std::uint32_t> now = renumbered; // through both renumberings
+  if (!joined.empty())
+    for (std::uint32_t& label : now)
+      label = joined[label];
+  detail::restoreCreaseAngles(results.graph, angle_of, now);
 }
 
 } // namespace visfeat
