@@ -156,7 +156,24 @@ TEST(EstimatorApi, SearchSurfaceGivesTheFullRunsOutputAtTheInputPoints)
   EXPECT_EQ(part.getSegmentation().cellLabels(), full.getSegmentation().cellLabels());
   Output some_finite = some;
   some_finite.points.pop_back();
-  expectSameFields(all, some_finite, index, "subset");
+  // The same fields but at the corner points claimed by vertex regions that no point
+  // falls in (claimCornerPoints: the nearest input point, which the subset may lack):
+  // a point a vertex in one run only, at most one per vertex region.
+  const auto vertex = static_cast<std::uint8_t>(visfeat::FeatureClass::kVertex);
+  Output same = some_finite;
+  std::size_t claimed = 0;
+  for (std::size_t j = 0; j < index.size(); ++j) {
+    const auto& p = all.points[index[j]];
+    auto& q = same.points[j];
+    if ((p.label != q.label || p.feature_class != q.feature_class) &&
+        (p.feature_class == vertex || q.feature_class == vertex)) {
+      ++claimed;
+      q.label = p.label;
+      q.feature_class = p.feature_class;
+    }
+  }
+  EXPECT_LE(claimed, full.getSegmentation().classCounts()[1]);
+  expectSameFields(all, same, index, "subset");
   EXPECT_TRUE(std::isnan(some.points.back().visibility_radius));
   EXPECT_EQ(some.points.back().label, 0u);
   EXPECT_FALSE(some.is_dense);

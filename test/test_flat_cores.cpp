@@ -1,11 +1,15 @@
 // Unit tests of flatCore() and of the classification it adds to ComponentSet: cores
 // thinner than a face by depth are faces on a flat part of the band, edges where the
-// band bends across them. Bands are voxelized here from exact surfaces under random
+// band bends across them; an edge ridge joined to a face core is split off it
+// (attachedRidges()), and one with the same face on both sides stays a crease (a crease
+// fading into its face). Bands are voxelized here from exact surfaces under random
 // rotations; the maps are painted on them.
 
 #include "band_fixtures.h"
 
+#include <visfeat/core/segmentation/attached_ridges.h>
 #include <visfeat/core/segmentation/components.h>
+#include <visfeat/core/segmentation/feature_segmentation.h>
 #include <visfeat/core/segmentation/flat_cores.h>
 
 #include <gtest/gtest.h>
@@ -21,6 +25,7 @@ namespace {
 using visfeat::CellCoord;
 using visfeat::CellId;
 using visfeat::FeatureClass;
+using visfeat::FeatureSegmentation;
 using visfeat::VoxelBand;
 
 constexpr int kGrid = 128;
@@ -52,11 +57,10 @@ struct FoldBand
   std::vector<CellId> core;
 };
 
+/** The band of a fold and, as core candidates, the cells of its samples (x, y) for
+ * which `core` holds. */
 FoldBand
-foldBand(const Fold& fold,
-         double core_y,
-         double core_half_width,
-         double core_half_length)
+foldBand(const Fold& fold, const std::function<bool(double, double)>& core_at)
 {
   std::set<std::array<int, 3>> cells, core;
   for (double x = -kHalf; x <= kHalf; x += 0.2)
@@ -66,7 +70,7 @@ foldBand(const Fold& fold,
                                   static_cast<int>(std::floor(p.y())),
                                   static_cast<int>(std::floor(p.z()))}};
       cells.insert(c);
-      if (std::abs(y - core_y) <= core_half_width && std::abs(x) <= core_half_length)
+      if (core_at(x, y))
         core.insert(c);
     }
   std::vector<CellCoord> coords;
@@ -76,6 +80,17 @@ foldBand(const Fold& fold,
   for (const auto& c : core)
     result.core.push_back(result.band.find(CellCoord(c[0], c[1], c[2])));
   return result;
+}
+
+FoldBand
+foldBand(const Fold& fold,
+         double core_y,
+         double core_half_width,
+         double core_half_length)
+{
+  return foldBand(fold, [&](double x, double y) {
+    return std::abs(y - core_y) <= core_half_width && std::abs(x) <= core_half_length;
+  });
 }
 
 bool
@@ -158,6 +173,118 @@ TEST(FlatCores, AThinCoreIsAFaceOnAFlatPartAndAnEdgeOnACrease)
   const visfeat::ComponentSet set = paintedCores(small, true);
   ASSERT_EQ(set.components().size(), 1u);
   EXPECT_EQ(set.components()[0].feature_class, FeatureClass::kEdge);
+}
+
+/** A crease whose valley fades at one end: a ridge 2 cells wide along the fold
+ * (ridge_start <= x <= 35), face cores from 16 cells off it on one side (or both),
+ * and beyond the ridge's end a stretch where the map stays high from the face cores to
+ * the fold (joined: it overlaps the ridge's end; else it stops 3 cells short of it). */
+FoldBand
+fadingCreaseBand(const Fold& fold,
+                 bool both_sides,
+                 bool joined,
+                 double ridge_start = -35.0)
+{
+  const double start = joined ? 34.0 : 38.0;
+  return foldBand(fold, [=](double x, double y) {
+    const bool ridge = std::abs(y) <= 1.0 && x >= ridge_start && x <= 35.0;
+    const bool face = y >= 16.0 || (both_sides && y <= -16.0);
+    const bool faded = x >= start && (y >= 0.0 || both_sides);
+    return ridge || face || faded;
+  });
+}
+
+TEST(AttachedRidges, ARidgeJoinedToAFaceCoreIsSplitOffWhereTheBandBends)
+{
+  std::mt19937_64 rng(20261203);
+  for (int r = 0; r < 3; ++r) {
+    Fold fold;
+    fold.rotation = visfeat_test::randomRotationMatrix(rng);
+    for (const double turn : {0.0, 90.0}) {
+      fold.turn = turn;
+      const FoldBand band = fadingCreaseBand(fold, false, true);
+      const visfeat::ComponentSet set = paintedCores(band, true);
+      std::size_t faces = 0, edges = 0, edge_cells = 0;
+      for (const auto& component : set.components()) {
+        faces += component.feature_class == FeatureClass::kFace;
+        edges += component.feature_class == FeatureClass::kEdge;
+        if (component.feature_class == FeatureClass::kEdge)
+          edge_cells += component.cells;
+      }
+      EXPECT_EQ(faces, 1u) << "rotation " << r << ", turn " << turn;
+      // on the plane the ridge is a finger of the face core; on the crease an edge
+      // of most of its 70 x 3 cells
+      EXPECT_EQ(edges, turn == 0.0 ? 0u : 1u) << "rotation " << r << ", turn " << turn;
+      if (turn != 0.0) {
+        EXPECT_GT(edge_cells, 120u) << "rotation " << r;
+      }
+      // cores never touch: a gap of cells in no component between them
+      const auto& labels = set.cellLabels();
+      for (std::size_t c = 0; c < labels.size(); ++c)
+        for (const CellId nb : band.band.neighbours(static_cast<CellId>(c)))
+          if (nb != visfeat::kNoCell && labels[c] != 0 &&
+              labels[static_cast<std::size_t>(nb)] != 0) {
+            ASSERT_EQ(labels[c], labels[static_cast<std::size_t>(nb)])
+              << "rotation " << r << ", turn " << turn;
+          }
+    }
+  }
+}
+
+TEST(AttachedRidges, AShortRidgeStaysInTheFaceCore)
+{
+  // 8 cells of ridge: what is left of it beyond the opening (3 steps) and the gap (1)
+  // holds fewer than 2 min_radius = 32 cells
+  std::mt19937_64 rng(5);
+  Fold fold;
+  fold.turn = 90.0;
+  fold.rotation = visfeat_test::randomRotationMatrix(rng);
+  for (const double ridge_start : {27.0, -35.0}) {
+    const visfeat::ComponentSet set =
+      paintedCores(fadingCreaseBand(fold, false, true, ridge_start), true);
+    EXPECT_EQ(set.components().size(), ridge_start == 27.0 ? 1u : 2u)
+      << "ridge from x = " << ridge_start;
+  }
+}
+
+/** The segmentation of a fading crease band: radius 16 on the cores, 8 elsewhere. */
+FeatureSegmentation
+segmentFading(const FoldBand& band)
+{
+  std::vector<std::uint8_t> radii(band.band.size(), 8);
+  for (const CellId c : band.core)
+    radii[static_cast<std::size_t>(c)] = 16;
+  visfeat::VisibilityMap::Parameters map_parameters;
+  map_parameters.max_radius = 16;
+  const auto map = visfeat::VisibilityMap::fromRadii(map_parameters, radii);
+  visfeat::SegmentationParameters parameters;
+  parameters.components.narrow_face_persistence = 0;
+  return FeatureSegmentation::compute(band.band, map, parameters);
+}
+
+TEST(FadingCreases, ACreaseWithOneFaceOnBothSidesStaysAnEdgeWhereTheBandBends)
+{
+  std::mt19937_64 rng(31);
+  for (int r = 0; r < 3; ++r) {
+    Fold fold;
+    fold.rotation = visfeat_test::randomRotationMatrix(rng);
+    for (const double turn : {0.0, 30.0, 90.0})
+      for (const bool joined : {true, false}) {
+        fold.turn = turn;
+        // one face core reaching around the crease's end: the same face on both sides
+        // (55 cells long: fewer than min_radius^2 cells, so that on the plane the
+        // ridge alone is no face of its own, flat_core_faces)
+        const auto s = segmentFading(fadingCreaseBand(fold, true, joined, -20.0));
+        const auto counts = s.classCounts();
+        EXPECT_EQ(counts[static_cast<std::size_t>(FeatureClass::kFace)], 1u)
+          << "rotation " << r << ", turn " << turn << ", joined " << joined;
+        // a 90-degree turn reads about 0.07 (kFadingCreaseVariation 0.02); 30 degrees
+        // about 0.014: a blend's or a shallow facet's speck, merged into the face
+        EXPECT_EQ(counts[static_cast<std::size_t>(FeatureClass::kEdge)],
+                  turn == 90.0 ? 1u : 0u)
+          << "rotation " << r << ", turn " << turn << ", joined " << joined;
+      }
+  }
 }
 
 } // namespace

@@ -66,7 +66,9 @@ struct PhaseTimes
  * radius has to be set (the automatic resolution builds its own k-d tree). The band is
  * built from the search surface (the input unless setSearchSurface() was called);
  * output is produced for the input's indices, each point labelled from the band cell it
- * falls in (GridSpec::cellOf).
+ * falls in (GridSpec::cellOf), but for the corner point that a vertex region no point
+ * falls in claims (the nearest input point: with a search surface, possibly another
+ * point than the full run's).
  *
  * Parameters are read when compute() runs, so the order of the set calls does not
  * matter: max_radius 0 ("auto", the default) is min_radius; the noise mode gives the

@@ -1,12 +1,21 @@
 #include <visfeat/core/common/error.h>
+#include <visfeat/core/segmentation/attached_ridges.h>
 #include <visfeat/core/segmentation/components.h>
 #include <visfeat/core/segmentation/flat_cores.h>
 #include <visfeat/core/segmentation/narrow_faces.h>
 
 #include <algorithm>
+#include <limits>
 #include <sstream>
 
 namespace visfeat {
+namespace {
+
+/** Cells left out of every core between a face core and a ridge split off it
+ * (attachedRidges()) while the components are extracted; 0 afterwards. */
+constexpr std::uint32_t kGapLabel = std::numeric_limits<std::uint32_t>::max();
+
+} // namespace
 
 void
 ComponentParameters::validate(int max_radius) const
@@ -85,10 +94,32 @@ ComponentSet::extract(const VoxelBand& band,
   set.labels_.assign(n, 0);
   std::vector<CellId> members;
   std::vector<std::uint32_t> depth(n, 0);
+  std::vector<std::uint32_t> stamp(n, 0);
+  std::uint32_t next_stamp = 0;
   // thin cores that may be the middle of a face (flat_core_faces): label, a cell
   std::vector<std::pair<std::uint32_t, CellId>> thin;
   const std::size_t thin_min_cells = static_cast<std::size_t>(parameters.min_radius) *
                                      static_cast<std::size_t>(parameters.min_radius);
+  // Measures and classifies the component of `cells` (labelled with the next label).
+  const auto add = [&](const std::vector<CellId>& cells, const Component* measured) {
+    const auto label = static_cast<std::uint32_t>(set.components_.size() + 1);
+    Component component = measured ? *measured : set.measure(band, cells, depth);
+    if (cells.size() <= static_cast<std::size_t>(parameters.vertex_max_cells))
+      component.feature_class = FeatureClass::kVertex;
+    else if (raw)
+      component.feature_class = component.mean_neighbours < parameters.dimensionality
+                                  ? FeatureClass::kEdge
+                                  : FeatureClass::kFace;
+    else if (component.depth >= static_cast<std::uint32_t>(parameters.face_min_depth))
+      component.feature_class = FeatureClass::kFace;
+    else {
+      component.feature_class = FeatureClass::kEdge;
+      if (parameters.flat_core_faces && cells.size() >= thin_min_cells)
+        thin.emplace_back(label, cells.front());
+    }
+    set.components_.push_back(component);
+  };
+  std::vector<CellId> gap;
   for (std::size_t seed = 0; seed < n; ++seed) {
     if (set.labels_[seed] != 0 || map.radii()[seed] < parameters.min_radius)
       continue;
@@ -102,26 +133,58 @@ ComponentSet::extract(const VoxelBand& band,
           set.labels_[static_cast<std::size_t>(nb)] = label;
           members.push_back(nb);
         }
-    Component component = set.measure(band, members, depth);
-    if (members.size() <= static_cast<std::size_t>(parameters.vertex_max_cells))
-      component.feature_class = FeatureClass::kVertex;
-    else if (raw)
-      component.feature_class = component.mean_neighbours < parameters.dimensionality
-                                  ? FeatureClass::kEdge
-                                  : FeatureClass::kFace;
-    else if (component.depth >= static_cast<std::uint32_t>(parameters.face_min_depth))
-      component.feature_class = FeatureClass::kFace;
-    else {
-      component.feature_class = FeatureClass::kEdge;
-      if (parameters.flat_core_faces && members.size() >= thin_min_cells)
-        thin.emplace_back(label, static_cast<CellId>(seed));
+    const Component whole = set.measure(band, members, depth);
+    std::vector<std::vector<CellId>> ridges;
+    if (!raw &&
+        members.size() > static_cast<std::size_t>(parameters.vertex_max_cells) &&
+        whole.depth >= static_cast<std::uint32_t>(parameters.face_min_depth))
+      ridges = attachedRidges(band, members, depth,
+                              2 * static_cast<std::size_t>(parameters.min_radius),
+                              stamp, next_stamp, gap);
+    if (ridges.empty()) {
+      add(members, &whole);
+      continue;
     }
-    set.components_.push_back(component);
+    // The face core without its ridges and their gaps may fall apart: each piece is
+    // a component of its own, then each ridge.
+    for (const CellId c : gap)
+      set.labels_[static_cast<std::size_t>(c)] = kGapLabel;
+    for (const auto& ridge : ridges)
+      for (const CellId c : ridge)
+        set.labels_[static_cast<std::size_t>(c)] = kGapLabel;
+    constexpr std::uint32_t kUnassigned = kGapLabel - 1;
+    for (const CellId c : members)
+      if (set.labels_[static_cast<std::size_t>(c)] == label)
+        set.labels_[static_cast<std::size_t>(c)] = kUnassigned;
+    for (const CellId start : members) {
+      if (set.labels_[static_cast<std::size_t>(start)] != kUnassigned)
+        continue;
+      const auto piece_label = static_cast<std::uint32_t>(set.components_.size() + 1);
+      std::vector<CellId> piece(1, start);
+      set.labels_[static_cast<std::size_t>(start)] = piece_label;
+      for (std::size_t head = 0; head < piece.size(); ++head)
+        for (const CellId nb : band.neighbours(piece[head]))
+          if (nb != kNoCell &&
+              set.labels_[static_cast<std::size_t>(nb)] == kUnassigned) {
+            set.labels_[static_cast<std::size_t>(nb)] = piece_label;
+            piece.push_back(nb);
+          }
+      add(piece, nullptr);
+    }
+    for (const auto& ridge : ridges) {
+      const auto ridge_label = static_cast<std::uint32_t>(set.components_.size() + 1);
+      for (const CellId c : ridge)
+        set.labels_[static_cast<std::size_t>(c)] = ridge_label;
+      add(ridge, nullptr);
+    }
   }
   if (!thin.empty())
     set.findFlatCores(band, thin);
   if (!raw && parameters.narrow_face_persistence > 0)
     set.addNarrowFaceCores(band, map, parameters, depth);
+  for (std::uint32_t& label : set.labels_)
+    if (label == kGapLabel)
+      label = 0;
   return set;
 }
 

@@ -3,6 +3,7 @@
 
 #include "segmentation_steps.h"
 
+#include <visfeat/core/segmentation/flat_cores.h>
 #include <visfeat/core/segmentation/region_growing.h>
 
 #include <algorithm>
@@ -32,6 +33,26 @@ faceNeighbours(const std::vector<FeatureClass>& cls,
       faces.emplace_back(it->second, it->first.second);
   std::sort(faces.rbegin(), faces.rend());
   return faces;
+}
+
+/** A crease fading into its face: an edge core of more than 5 min_radius cells (a
+ * ridge 2-3 cells wide along more than one separation, 2 min_radius) across which the
+ * band turns by about 40 degrees or more (kFadingCreaseVariation). Where a crease's
+ * valley fades (a fin that sinks into a face, a crease that turns shallow towards one
+ * end) the face's core reaches around its end, the watershed puts one face on both its
+ * sides, and the speck rule would merge it into that face. */
+bool
+fadingCrease(const SegmentationState& state,
+             std::uint32_t l,
+             std::vector<std::uint32_t>& stamp,
+             std::uint32_t& next_stamp)
+{
+  const auto min_cells =
+    5 * static_cast<std::size_t>(state.parameters.components.min_radius);
+  return state.cores[l - 1].feature_class == FeatureClass::kEdge &&
+         state.core_cells[l].size() > min_cells &&
+         coreVariation(state.band, state.core_cells[l], stamp, next_stamp) >=
+           kFadingCreaseVariation;
 }
 
 /** The neighbour a region shares the most boundary with (the smallest label of
@@ -169,11 +190,18 @@ classifyByFaces(SegmentationState& state)
 {
   // Every label is still its own set: the label contacts are the sets'.
   const Contacts& contacts = state.contacts.byLabel();
+  std::vector<std::uint32_t> stamp(state.band.size(), 0);
+  std::uint32_t next_stamp = 0;
   for (std::uint32_t l = 1; l <= state.labelCount(); ++l) {
     if (state.cls[l] == FeatureClass::kFace)
       continue;
     const auto faces = faceNeighbours(state.cls, contacts, l);
     state.face_count[l] = static_cast<std::uint32_t>(faces.size());
+    if (faces.size() == 1 && fadingCrease(state, l, stamp, next_stamp)) {
+      state.cls[l] = FeatureClass::kEdge;
+      state.signature[l] = {faces[0].second, faces[0].second};
+      continue;
+    }
     if (faces.size() <= 1) {
       state.cls[l] = FeatureClass::kNone; // a speck unless the vertex test claims it
       state.speck_into[l] = largestNeighbour(contacts, l);

@@ -47,11 +47,11 @@ patchVariation(const VoxelBand& band,
 
 } // namespace
 
-bool
-flatCore(const VoxelBand& band,
-         const std::vector<CellId>& members,
-         std::vector<std::uint32_t>& stamp,
-         std::uint32_t& next_stamp)
+double
+coreVariation(const VoxelBand& band,
+              const std::vector<CellId>& members,
+              std::vector<std::uint32_t>& stamp,
+              std::uint32_t& next_stamp)
 {
   const std::size_t stride = std::max<std::size_t>(1, members.size() / kPatchesPerCore);
   std::vector<double> variation;
@@ -62,7 +62,16 @@ flatCore(const VoxelBand& band,
   const auto middle =
     variation.begin() + static_cast<std::ptrdiff_t>(variation.size() / 2);
   std::nth_element(variation.begin(), middle, variation.end());
-  return *middle < kFlatCoreVariation;
+  return *middle;
+}
+
+bool
+flatCore(const VoxelBand& band,
+         const std::vector<CellId>& members,
+         std::vector<std::uint32_t>& stamp,
+         std::uint32_t& next_stamp)
+{
+  return coreVariation(band, members, stamp, next_stamp) < kFlatCoreVariation;
 }
 
 } // namespace visfeat

@@ -115,7 +115,11 @@ struct Component
  * face about 2 min_radius cells wide between two creases, where the map reaches
  * min_radius only along a strip a few cells wide), else edge. Smaller thin cores on
  * flat parts (specks of a rough band) stay edges, and the segmentation merges them into
- * their face as before.
+ * their face as before. In default mode a face core is first cleared of the edge ridges
+ * joined to it where their valleys fade (attachedRidges()): each ridge becomes an edge
+ * component numbered right after the face core's pieces (the face core keeps its label
+ * for its first piece, in `members` order, if the ridges cut it apart), and the cells
+ * between them belong to no component.
  */
 class ComponentSet
 {

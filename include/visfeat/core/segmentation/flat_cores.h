@@ -26,10 +26,31 @@ constexpr int kFlatCoreRadius = 10;
  * are blends under the default min_crease_angle of 20 degrees, or close to it). */
 constexpr double kFlatCoreVariation = 0.010;
 
-/** \brief Whether a core lies on a flat part of the band: the median, over up to 32
- * of its cells (evenly spaced in `members`' order), of the surface variation
- * (smallest eigenvalue of the covariance over their sum) of the band cells within
- * kFlatCoreRadius 6-steps of the cell is below kFlatCoreVariation.
+/** \brief An edge core with the same face on both sides is kept as a crease (a crease
+ * fading into its face, segmentation step 3; with more than 5 min_radius cells) when
+ * its median surface variation (coreVariation()) is at least this: 0.020, twice the
+ * flat limit, about a 40-degree turn by the formula above. Measured 2026-12-03 on the
+ * public fandisk mesh at 512 cells: the cores on its two fading creases (80-90 degrees
+ * along most of their 368 and 417 cells) read 0.022-0.088 but for one of 127 cells
+ * (0.016), while 22 cores on its curved faces and shallow (below 30 degrees) creases,
+ * 16-92 cells from every crease of more than 30 degrees, read 0.012-0.016. Pieces of
+ * the 42-degree edges of the generated icosahedron that touch one face read 0.020-0.049
+ * (sigma 0.45 in the noise mode: 49-53 cells; 10,000 points, seed 33: 67 cells), hence
+ * the size. Not swept. */
+constexpr double kFadingCreaseVariation = 0.020;
+
+/** \brief The median, over up to 32 of a core's cells (evenly spaced in `members`'
+ * order), of the surface variation (smallest eigenvalue of the covariance over their
+ * sum) of the band cells within kFlatCoreRadius 6-steps of the cell: 0 on a plane,
+ * about 0.14 sin^2(t / 2) + 0.004 across a crease turning by t degrees. Arguments as
+ * flatCore(). */
+double coreVariation(const VoxelBand& band,
+                     const std::vector<CellId>& members,
+                     std::vector<std::uint32_t>& stamp,
+                     std::uint32_t& next_stamp);
+
+/** \brief Whether a core lies on a flat part of the band: its coreVariation() is below
+ * kFlatCoreVariation.
  *
  * A core too thin for a face by its depth (ComponentParameters::face_min_depth) is an
  * edge ridge when the surface bends across it, and the middle of a face between two

@@ -1,0 +1,53 @@
+#pragma once
+
+#include <visfeat/core/band/voxel_band.h>
+
+#include <cstdint>
+#include <vector>
+
+namespace visfeat {
+
+/** \brief Opening radius that tells an edge ridge from a face core, in 6-steps: 3.
+ * Edge ridges are 2-4 cells wide (depth <= 2, ComponentParameters::face_min_depth), so
+ * erosion by 3 steps removes them while a face core, tens of cells wide, keeps its
+ * middle; dilating that middle back by 3 steps restores the face core up to its border
+ * and leaves the ridges out. Measured 2026-12-03 on the public fandisk mesh at 512
+ * cells: two 80-90 degree creases, 368 and 417 cells long, whose ridges of radius 16
+ * join a face core where their valleys fade (a 30-36 degree stretch at one end), were
+ * labelled face along their whole length. Not swept. */
+constexpr std::uint32_t kRidgeOpeningSteps = 3;
+
+/** \brief Thin parts of a face core that are edge ridges joined to it.
+ *
+ * A crease's ridge of cells that reach min_radius is separated from the face cores
+ * beside it by the crease's valleys; where a valley fades (a crease that turns shallow
+ * at one end, a corner whose cells all see far), the ridge and a face core form one
+ * component, which is thick enough to be a face, and the watershed then labels the
+ * whole crease face. This finds such ridges by a morphological opening within the
+ * component: cells at least kRidgeOpeningSteps 6-steps from its border, dilated back
+ * by kRidgeOpeningSteps steps through the component, are the face core; the rest falls
+ * into connected thin pieces. A piece is a ridge when, without the cells next to the
+ * face core (left out of every core, so that the two never touch), it still holds more
+ * than min_cells connected cells and the band bends across it (not flatCore(): a
+ * finger of the face core on a flat part stays in the face).
+ * \param[in] band the voxel band
+ * \param[in] members the face core's cells (non-empty)
+ * \param[in] depth per band cell, the 6-step distance of a member from the core's
+ *            border (ComponentSet::measure())
+ * \param[in] min_cells a ridge has more cells than this
+ * \param[in,out] stamp scratch, one entry per band cell (band.size()); entries are
+ *            left as any value above their previous maximum
+ * \param[in,out] next_stamp the next unused stamp (advanced)
+ * \param[out] gap cells between the face core and the ridges found, to leave out of
+ *            every core
+ * \return the ridges, each a connected list of cells, in the order of their first
+ *         cell in `members` */
+std::vector<std::vector<CellId>> attachedRidges(const VoxelBand& band,
+                                                const std::vector<CellId>& members,
+                                                const std::vector<std::uint32_t>& depth,
+                                                std::size_t min_cells,
+                                                std::vector<std::uint32_t>& stamp,
+                                                std::uint32_t& next_stamp,
+                                                std::vector<CellId>& gap);
+
+} // namespace visfeat
