@@ -234,7 +234,7 @@ TEST(AttachedRidges, ARidgeJoinedToAFaceCoreIsSplitOffWhereTheBandBends)
 TEST(AttachedRidges, AShortRidgeStaysInTheFaceCore)
 {
   // 8 cells of ridge: what is left of it beyond the opening (3 steps) and the gap (1)
-  // holds fewer than 2 min_radius = 32 cells
+  // holds fewer than 5 min_radius = 80 cells
   std::mt19937_64 rng(5);
   Fold fold;
   fold.turn = 90.0;

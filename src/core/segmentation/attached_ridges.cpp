@@ -88,10 +88,10 @@ attachedRidges(const VoxelBand& band,
   for (std::vector<CellId>& piece : pieces(band, candidates, stamp, thin, done))
     if (piece.size() > min_cells)
       ridges.push_back(std::move(piece));
-  // Flatness last: flatCore() restamps the cells around each piece.
+  // The bend last: coreVariation() restamps the cells around each piece.
   std::vector<std::vector<CellId>> result;
   for (std::vector<CellId>& ridge : ridges)
-    if (!flatCore(band, ridge, stamp, next_stamp))
+    if (coreVariation(band, ridge, stamp, next_stamp) >= kFadingCreaseVariation)
       result.push_back(std::move(ridge));
   if (result.empty()) {
     gap.clear();

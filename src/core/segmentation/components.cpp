@@ -139,7 +139,8 @@ ComponentSet::extract(const VoxelBand& band,
         members.size() > static_cast<std::size_t>(parameters.vertex_max_cells) &&
         whole.depth >= static_cast<std::uint32_t>(parameters.face_min_depth))
       ridges = attachedRidges(band, members, depth,
-                              2 * static_cast<std::size_t>(parameters.min_radius),
+                              kFadingCreaseMinRadii *
+                                static_cast<std::size_t>(parameters.min_radius),
                               stamp, next_stamp, gap);
     if (ridges.empty()) {
       add(members, &whole);

@@ -21,9 +21,9 @@ void growCoresIntoRegions(SegmentationState& state);
  * edge between its two main faces (most shared boundary; `signature`); one touching at
  * most one face is a speck (class kNone, `speck_into` = its neighbour with the most
  * shared boundary), unless findVertices() claims it, or it touches one face and is a
- * crease fading into it (an edge core of more than 5 min_radius cells across which the
- * band turns, kFadingCreaseVariation): an edge with that face on both sides (signature
- * (f, f)). Faces stay faces. */
+ * crease fading into it (an edge core of more than kFadingCreaseMinRadii min_radius
+ * cells across which the band turns, kFadingCreaseVariation): an edge with that face on
+ * both sides (signature (f, f)). Faces stay faces. */
 void classifyByFaces(SegmentationState& state);
 
 /** \brief Step 3, the vertex test (the paper's geodesic dilation): a small core (<=

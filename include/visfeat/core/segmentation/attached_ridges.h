@@ -1,6 +1,7 @@
 #pragma once
 
 #include <visfeat/core/band/voxel_band.h>
+#include <visfeat/core/segmentation/flat_cores.h>
 
 #include <cstdint>
 #include <vector>
@@ -28,8 +29,12 @@ constexpr std::uint32_t kRidgeOpeningSteps = 3;
  * by kRidgeOpeningSteps steps through the component, are the face core; the rest falls
  * into connected thin pieces. A piece is a ridge when, without the cells next to the
  * face core (left out of every core, so that the two never touch), it still holds more
- * than min_cells connected cells and the band bends across it (not flatCore(): a
- * finger of the face core on a flat part stays in the face).
+ * than min_cells connected cells and the band bends across it as across a crease fading
+ * into its face (coreVariation() at least kFadingCreaseVariation, about 40 degrees):
+ * such a ridge stands as an edge even with one face on both sides. Thin pieces that
+ * bend less stay in the face: on a sparse cloud's rough band a face core is lacy, its
+ * thin pieces read 0.010-0.013 (the box with hole at 10,000 points), and split off they
+ * broke its rims into several edges.
  * \param[in] band the voxel band
  * \param[in] members the face core's cells (non-empty)
  * \param[in] depth per band cell, the 6-step distance of a member from the core's

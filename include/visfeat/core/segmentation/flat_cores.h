@@ -2,6 +2,7 @@
 
 #include <visfeat/core/band/voxel_band.h>
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -27,7 +28,8 @@ constexpr int kFlatCoreRadius = 10;
 constexpr double kFlatCoreVariation = 0.010;
 
 /** \brief An edge core with the same face on both sides is kept as a crease (a crease
- * fading into its face, segmentation step 3; with more than 5 min_radius cells) when
+ * fading into its face, segmentation step 3; with more than kFadingCreaseMinRadii
+ * min_radius cells) when
  * its median surface variation (coreVariation()) is at least this: 0.020, twice the
  * flat limit, about a 40-degree turn by the formula above. Measured 2026-12-03 on the
  * public fandisk mesh at 512 cells: the cores on its two fading creases (80-90 degrees
@@ -38,6 +40,11 @@ constexpr double kFlatCoreVariation = 0.010;
  * (sigma 0.45 in the noise mode: 49-53 cells; 10,000 points, seed 33: 67 cells), hence
  * the size. Not swept. */
 constexpr double kFadingCreaseVariation = 0.020;
+
+/** \brief A crease fading into its face (kFadingCreaseVariation) has more than this
+ * many times min_radius cells: 5, a ridge 2-3 cells wide along more than one separation
+ * (2 min_radius). Also the smallest ridge split off a face core (attachedRidges()). */
+constexpr std::size_t kFadingCreaseMinRadii = 5;
 
 /** \brief The median, over up to 32 of a core's cells (evenly spaced in `members`'
  * order), of the surface variation (smallest eigenvalue of the covariance over their
