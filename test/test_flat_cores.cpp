@@ -130,17 +130,25 @@ TEST(FlatCores, ACoreBesideTheCreaseReachesItWithinTheRadius)
   EXPECT_TRUE(flat(foldBand(fold, 20.0, 1.5, 20.0)));
 }
 
-/** Components of a fold's band with radius 16 on the cells of `band.core` and 8
- * elsewhere. */
-visfeat::ComponentSet
-paintedCores(const FoldBand& band, bool flat_core_faces)
+/** A map of a fold's band with radius 16 on the cells of `band.core` and 8 elsewhere.
+ */
+visfeat::VisibilityMap
+paintedMap(const FoldBand& band)
 {
   std::vector<std::uint8_t> radii(band.band.size(), 8);
   for (const CellId c : band.core)
     radii[static_cast<std::size_t>(c)] = 16;
   visfeat::VisibilityMap::Parameters map_parameters;
   map_parameters.max_radius = 16;
-  const auto map = visfeat::VisibilityMap::fromRadii(map_parameters, radii);
+  return visfeat::VisibilityMap::fromRadii(map_parameters, radii);
+}
+
+/** Components of a fold's band with radius 16 on the cells of `band.core` and 8
+ * elsewhere. */
+visfeat::ComponentSet
+paintedCores(const FoldBand& band, bool flat_core_faces)
+{
+  const auto map = paintedMap(band);
   visfeat::ComponentParameters parameters; // min_radius 16, face_min_depth 4
   parameters.narrow_face_persistence = 0;
   parameters.flat_core_faces = flat_core_faces;
@@ -251,12 +259,7 @@ TEST(AttachedRidges, AShortRidgeStaysInTheFaceCore)
 FeatureSegmentation
 segmentFading(const FoldBand& band)
 {
-  std::vector<std::uint8_t> radii(band.band.size(), 8);
-  for (const CellId c : band.core)
-    radii[static_cast<std::size_t>(c)] = 16;
-  visfeat::VisibilityMap::Parameters map_parameters;
-  map_parameters.max_radius = 16;
-  const auto map = visfeat::VisibilityMap::fromRadii(map_parameters, radii);
+  const auto map = paintedMap(band);
   visfeat::SegmentationParameters parameters;
   parameters.components.narrow_face_persistence = 0;
   return FeatureSegmentation::compute(band.band, map, parameters);
