@@ -30,18 +30,29 @@ pieces(const VoxelBand& band,
   return result;
 }
 
+/** Whether a band neighbour of `cell` is stamped `mark`. */
+bool
+besideStamp(const VoxelBand& band,
+            const std::vector<std::uint32_t>& stamp,
+            CellId cell,
+            std::uint32_t mark)
+{
+  for (const CellId nb : band.neighbours(cell))
+    if (nb != kNoCell && stamp[static_cast<std::size_t>(nb)] == mark)
+      return true;
+  return false;
+}
+
 } // namespace
 
-std::vector<std::vector<CellId>>
+RidgeSplit
 attachedRidges(const VoxelBand& band,
                const std::vector<CellId>& members,
                const std::vector<std::uint32_t>& depth,
-               std::size_t min_cells,
+               int min_radius,
                std::vector<std::uint32_t>& stamp,
-               std::uint32_t& next_stamp,
-               std::vector<CellId>& gap)
+               std::uint32_t& next_stamp)
 {
-  gap.clear();
   // Members, then the opened face core within them (erosion, then dilation).
   const std::uint32_t member = ++next_stamp;
   const std::uint32_t opened = ++next_stamp;
@@ -67,51 +78,38 @@ attachedRidges(const VoxelBand& band,
   }
   // Thin cells next to the face core are the gap; the rest falls into pieces.
   const std::uint32_t thin = ++next_stamp;
-  std::vector<CellId> candidates;
-  for (const CellId c : members) {
-    if (stamp[static_cast<std::size_t>(c)] != member)
-      continue;
-    bool touches = false;
-    for (const CellId nb : band.neighbours(c))
-      touches =
-        touches || (nb != kNoCell && stamp[static_cast<std::size_t>(nb)] == opened);
-    if (touches)
-      gap.push_back(c);
-    else
-      candidates.push_back(c);
-  }
+  std::vector<CellId> gap, candidates;
+  for (const CellId c : members)
+    if (stamp[static_cast<std::size_t>(c)] == member)
+      (besideStamp(band, stamp, c, opened) ? gap : candidates).push_back(c);
   for (const CellId c : candidates)
     stamp[static_cast<std::size_t>(c)] = thin;
   const std::uint32_t done = ++next_stamp;
-  std::vector<std::vector<CellId>> ridges;
-  std::vector<CellId> kept_gap;
+  // The bend last: fadingCreaseCore() restamps the cells around each piece.
+  RidgeSplit split;
   for (std::vector<CellId>& piece : pieces(band, candidates, stamp, thin, done))
-    if (piece.size() > min_cells)
-      ridges.push_back(std::move(piece));
-  // The bend last: coreVariation() restamps the cells around each piece.
-  std::vector<std::vector<CellId>> result;
-  for (std::vector<CellId>& ridge : ridges)
-    if (coreVariation(band, ridge, stamp, next_stamp) >= kFadingCreaseVariation)
-      result.push_back(std::move(ridge));
-  if (result.empty()) {
-    gap.clear();
-    return result;
-  }
-  // Only the gap cells beside a kept ridge leave the face core.
+    if (fadingCreaseCore(band, piece, min_radius, stamp, next_stamp))
+      split.ridges.push_back(std::move(piece));
+  if (split.ridges.empty())
+    return split;
+  // Only the gap cells beside a kept ridge leave the face core; the rest of the members
+  // is the face core, in pieces.
   const std::uint32_t ridge_mark = ++next_stamp;
-  for (const auto& ridge : result)
+  for (const auto& ridge : split.ridges)
     for (const CellId c : ridge)
       stamp[static_cast<std::size_t>(c)] = ridge_mark;
-  for (const CellId c : gap) {
-    bool beside = false;
-    for (const CellId nb : band.neighbours(c))
-      beside =
-        beside || (nb != kNoCell && stamp[static_cast<std::size_t>(nb)] == ridge_mark);
-    if (beside)
-      kept_gap.push_back(c);
-  }
-  gap = std::move(kept_gap);
-  return result;
+  for (const CellId c : gap)
+    if (besideStamp(band, stamp, c, ridge_mark))
+      split.gap.push_back(c);
+  const std::uint32_t face = ++next_stamp;
+  for (const CellId c : members)
+    if (stamp[static_cast<std::size_t>(c)] != ridge_mark)
+      stamp[static_cast<std::size_t>(c)] = face;
+  const std::uint32_t left_out = ++next_stamp;
+  for (const CellId c : split.gap)
+    stamp[static_cast<std::size_t>(c)] = left_out;
+  split.face_pieces = pieces(band, members, stamp, face, ++next_stamp);
+  return split;
 }
 
 } // namespace visfeat

@@ -15,6 +15,9 @@ namespace {
  * (attachedRidges()) while the components are extracted; 0 afterwards. */
 constexpr std::uint32_t kGapLabel = std::numeric_limits<std::uint32_t>::max();
 
+/** The cells of a face core split by attachedRidges() until their piece is labelled. */
+constexpr std::uint32_t kUnassignedLabel = kGapLabel - 1;
+
 } // namespace
 
 void
@@ -119,7 +122,6 @@ ComponentSet::extract(const VoxelBand& band,
     }
     set.components_.push_back(component);
   };
-  std::vector<CellId> gap;
   for (std::size_t seed = 0; seed < n; ++seed) {
     if (set.labels_[seed] != 0 || map.radii()[seed] < parameters.min_radius)
       continue;
@@ -134,50 +136,29 @@ ComponentSet::extract(const VoxelBand& band,
           members.push_back(nb);
         }
     const Component whole = set.measure(band, members, depth);
-    std::vector<std::vector<CellId>> ridges;
+    RidgeSplit split;
     if (!raw &&
         members.size() > static_cast<std::size_t>(parameters.vertex_max_cells) &&
         whole.depth >= static_cast<std::uint32_t>(parameters.face_min_depth))
-      ridges = attachedRidges(band, members, depth,
-                              kFadingCreaseMinRadii *
-                                static_cast<std::size_t>(parameters.min_radius),
-                              stamp, next_stamp, gap);
-    if (ridges.empty()) {
+      split =
+        attachedRidges(band, members, depth, parameters.min_radius, stamp, next_stamp);
+    if (split.ridges.empty()) {
       add(members, &whole);
       continue;
     }
-    // The face core without its ridges and their gaps may fall apart: each piece is
-    // a component of its own, then each ridge.
-    for (const CellId c : gap)
-      set.labels_[static_cast<std::size_t>(c)] = kGapLabel;
-    for (const auto& ridge : ridges)
-      for (const CellId c : ridge)
-        set.labels_[static_cast<std::size_t>(c)] = kGapLabel;
-    constexpr std::uint32_t kUnassigned = kGapLabel - 1;
+    // Each piece of the face core left is a component of its own, then each ridge;
+    // until its turn, a list's cells belong to none (measure() reads the labels).
     for (const CellId c : members)
-      if (set.labels_[static_cast<std::size_t>(c)] == label)
-        set.labels_[static_cast<std::size_t>(c)] = kUnassigned;
-    for (const CellId start : members) {
-      if (set.labels_[static_cast<std::size_t>(start)] != kUnassigned)
-        continue;
-      const auto piece_label = static_cast<std::uint32_t>(set.components_.size() + 1);
-      std::vector<CellId> piece(1, start);
-      set.labels_[static_cast<std::size_t>(start)] = piece_label;
-      for (std::size_t head = 0; head < piece.size(); ++head)
-        for (const CellId nb : band.neighbours(piece[head]))
-          if (nb != kNoCell &&
-              set.labels_[static_cast<std::size_t>(nb)] == kUnassigned) {
-            set.labels_[static_cast<std::size_t>(nb)] = piece_label;
-            piece.push_back(nb);
-          }
-      add(piece, nullptr);
-    }
-    for (const auto& ridge : ridges) {
-      const auto ridge_label = static_cast<std::uint32_t>(set.components_.size() + 1);
-      for (const CellId c : ridge)
-        set.labels_[static_cast<std::size_t>(c)] = ridge_label;
-      add(ridge, nullptr);
-    }
+      set.labels_[static_cast<std::size_t>(c)] = kUnassignedLabel;
+    for (const CellId c : split.gap)
+      set.labels_[static_cast<std::size_t>(c)] = kGapLabel;
+    for (const auto* list : {&split.face_pieces, &split.ridges})
+      for (const std::vector<CellId>& cells : *list) {
+        const auto cells_label = static_cast<std::uint32_t>(set.components_.size() + 1);
+        for (const CellId c : cells)
+          set.labels_[static_cast<std::size_t>(c)] = cells_label;
+        add(cells, nullptr);
+      }
   }
   if (!thin.empty())
     set.findFlatCores(band, thin);

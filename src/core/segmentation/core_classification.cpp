@@ -35,10 +35,9 @@ faceNeighbours(const std::vector<FeatureClass>& cls,
   return faces;
 }
 
-/** A crease fading into its face: an edge core of more than kFadingCreaseMinRadii (5)
- * min_radius cells (a ridge 2-3 cells wide along more than one separation, 2
- * min_radius) across which the band turns by about 40 degrees or more
- * (kFadingCreaseVariation). Where a crease's valley fades (a fin that sinks into a
+/** A crease fading into its face: an edge core that bends like one
+ * (fadingCreaseCore(): more than 5 min_radius cells, a turn of about 40 degrees or
+ * more). Where a crease's valley fades (a fin that sinks into a
  * face, a crease that turns shallow towards one end) the face's core reaches around its
  * end, the watershed puts one face on both its sides, and the speck rule would merge it
  * into that face. */
@@ -48,13 +47,9 @@ fadingCrease(const SegmentationState& state,
              std::vector<std::uint32_t>& stamp,
              std::uint32_t& next_stamp)
 {
-  const auto min_cells =
-    kFadingCreaseMinRadii *
-    static_cast<std::size_t>(state.parameters.components.min_radius);
   return state.cores[l - 1].feature_class == FeatureClass::kEdge &&
-         state.core_cells[l].size() > min_cells &&
-         coreVariation(state.band, state.core_cells[l], stamp, next_stamp) >=
-           kFadingCreaseVariation;
+         fadingCreaseCore(state.band, state.core_cells[l],
+                          state.parameters.components.min_radius, stamp, next_stamp);
 }
 
 /** The neighbour a region shares the most boundary with (the smallest label of

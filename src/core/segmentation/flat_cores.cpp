@@ -74,4 +74,16 @@ flatCore(const VoxelBand& band,
   return coreVariation(band, members, stamp, next_stamp) < kFlatCoreVariation;
 }
 
+bool
+fadingCreaseCore(const VoxelBand& band,
+                 const std::vector<CellId>& members,
+                 int min_radius,
+                 std::vector<std::uint32_t>& stamp,
+                 std::uint32_t& next_stamp)
+{
+  return members.size() >
+           kFadingCreaseMinRadii * static_cast<std::size_t>(min_radius) &&
+         coreVariation(band, members, stamp, next_stamp) >= kFadingCreaseVariation;
+}
+
 } // namespace visfeat

@@ -56,6 +56,16 @@ double coreVariation(const VoxelBand& band,
                      std::vector<std::uint32_t>& stamp,
                      std::uint32_t& next_stamp);
 
+/** \brief Whether a core's cells bend like a crease fading into its face: more than
+ * kFadingCreaseMinRadii x min_radius cells and a coreVariation() of at least
+ * kFadingCreaseVariation. The test of a fading crease (segmentation step 3) and of a
+ * ridge split off a face core (attachedRidges()). Other arguments as flatCore(). */
+bool fadingCreaseCore(const VoxelBand& band,
+                      const std::vector<CellId>& members,
+                      int min_radius,
+                      std::vector<std::uint32_t>& stamp,
+                      std::uint32_t& next_stamp);
+
 /** \brief Whether a core lies on a flat part of the band: its coreVariation() is below
  * kFlatCoreVariation.
  *
