@@ -45,8 +45,9 @@ struct SmoothingParameters
  * parameters.radius cells (the noise mode of VisibilityFeatureEstimation).
  *
  * Neighbours are found through the grid's cells (no search tree): the points are
- * bucketed by cell and each point scans the cells within the radius. Non-finite points
- * are returned unchanged and are nobody's neighbour.
+ * bucketed by cell, the cells within the radius are looked up once for all the points
+ * of a cell, and each point scans their points. Non-finite points are returned
+ * unchanged and are nobody's neighbour.
  *
  * \param[in] points the cloud (world units); every finite point must lie in the grid
  * \param[in] grid   the grid (cell size, origin, dims)
