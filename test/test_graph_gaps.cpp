@@ -1,6 +1,7 @@
 // findGraphGaps(): where a topology graph departs from that of a closed part. A box's
 // surface labelled by its faces, edges and corners has none; the same box with one
-// corner relabelled as face, or a face cut off from the rest, has them.
+// corner relabelled as face, or a face cut off from the rest, has them; an edge with
+// the same face on both sides (a crease fading into its face) is counted apart.
 
 #include "band_fixtures.h"
 
@@ -44,6 +45,28 @@ struct LabelledBox
     ids = std::move(regions.ids);
   }
 
+  /** Region `gone` joins region `into`; the last label takes its number (so that no
+   * label is left without cells, which would be a lone region). */
+  void joinRegion(std::uint32_t gone, std::uint32_t into)
+  {
+    const auto last = static_cast<std::uint32_t>(classes.size());
+    for (std::uint32_t& l : labels)
+      l = l == gone ? into : l;
+    if (into == last)
+      into = gone;
+    for (std::uint32_t& l : labels)
+      l = l == last ? gone : l;
+    classes[gone - 1] = classes[last - 1];
+    classes.pop_back();
+    for (auto it = ids.begin(); it != ids.end();)
+      if (it->second == gone)
+        it = ids.erase(it);
+      else {
+        it->second = it->second == last ? gone : it->second;
+        ++it;
+      }
+  }
+
   TopologyGraph graph() const
   {
     return TopologyGraph::build(band, labels, classes,
@@ -84,6 +107,35 @@ TEST(GraphGaps, AMissingCornerLeavesThreeEdgesWithOneCorner)
                              "touches no other");
 }
 
+TEST(GraphGaps, AnEdgeWithOneFaceOnBothSidesIsAFadingCreaseNotAGap)
+{
+  LabelledBox box;
+  // the face y = lo joins the face x = lo: the edge between them has that face on
+  // both sides, as a crease fading into its face has
+  box.joinRegion(box.ids.at({0, -1, 0}), box.ids.at({-1, 0, 0}));
+  const TopologyGraph graph = box.graph();
+  ASSERT_EQ(graph.facesOfEdge(box.ids.at({-1, -1, 0})),
+            std::vector<std::uint32_t>{box.ids.at({-1, 0, 0})});
+  const GraphGaps gaps = visfeat::findGraphGaps(graph);
+  EXPECT_EQ(gaps.edges, 12u);
+  EXPECT_EQ(gaps.one_face, 1u);
+  EXPECT_EQ(gaps.one_corner, 0u);
+  EXPECT_EQ(gaps.not_two_faces, 0u);
+  EXPECT_FALSE(gaps.any());
+  EXPECT_EQ(gaps.describe(), "");
+
+  // with its corner at z = lo gone as well, the three edges there lose it; the fading
+  // crease is still counted apart
+  box.joinRegion(box.ids.at({-1, -1, -1}), box.ids.at({-1, 0, 0}));
+  const GraphGaps without_corner = visfeat::findGraphGaps(box.graph());
+  EXPECT_EQ(without_corner.one_face, 1u);
+  EXPECT_EQ(without_corner.one_corner, 2u);
+  EXPECT_TRUE(without_corner.any());
+  EXPECT_EQ(without_corner.describe(),
+            "2 of 12 edges end at a corner on one side only (1 more edge has one face "
+            "on both sides: a crease fading into it)");
+}
+
 TEST(GraphGaps, EdgesWithoutCornersAloneAreNoGap)
 {
   // a cylinder's rims are closed loops without corners
@@ -103,11 +155,16 @@ TEST(GraphGaps, EdgesWithoutCornersAloneAreNoGap)
   all.no_corner = 8;
   all.not_two_faces = 1;
   all.lone_regions = 2;
+  all.one_face = 2;
   EXPECT_TRUE(all.any());
   EXPECT_EQ(all.describe(),
             "11 of 28 edges end at a corner on one side only and 8 more at "
             "neither, 1 edge does not lie between two faces, 2 regions "
-            "touch no other");
+            "touch no other (2 more edges have one face on both sides: creases "
+            "fading into it)");
+  GraphGaps fading = loops;
+  fading.one_face = 3;
+  EXPECT_FALSE(fading.any());
 }
 
 } // namespace

@@ -15,10 +15,15 @@ findGraphGaps(const TopologyGraph& graph)
     if (graph.node(id).feature_class != FeatureClass::kEdge)
       continue;
     ++gaps.edges;
+    const std::size_t faces = graph.facesOfEdge(id).size();
+    if (faces == 1) { // a crease fading into its face: no corner where it fades
+      ++gaps.one_face;
+      continue;
+    }
     const std::size_t corners = graph.verticesOfEdge(id).size();
     gaps.one_corner += corners == 1 ? 1 : 0;
     gaps.no_corner += corners == 0 ? 1 : 0;
-    gaps.not_two_faces += graph.facesOfEdge(id).size() != 2 ? 1 : 0;
+    gaps.not_two_faces += faces != 2 ? 1 : 0;
   }
   return gaps;
 }
@@ -46,6 +51,10 @@ GraphGaps::describe() const
   if (lone_regions > 0)
     out << sep << lone_regions
         << (lone_regions == 1 ? " region touches" : " regions touch") << " no other";
+  if (one_face > 0)
+    out << " (" << one_face << " more " << (one_face == 1 ? "edge has" : "edges have")
+        << " one face on both sides: " << (one_face == 1 ? "a crease" : "creases")
+        << " fading into it)";
   return out.str();
 }
 

@@ -14,23 +14,31 @@ namespace visfeat {
  * On the clouds of a closed part these gaps mean features the segmentation did not
  * separate (closer than about 2 min_radius cells): an edge that stops short of its
  * corner, a corner that was never made, a narrow face swallowed by its neighbours. A
- * scan's border (an open surface) leaves edges without their outer corner too. */
+ * scan's border (an open surface) leaves edges without their outer corner too.
+ *
+ * An edge with one face on both sides is a crease fading into its face (the
+ * segmentation keeps such an edge only when it bends like one, kFadingCreaseVariation
+ * in flat_cores.h: a fin sinking into a face, a crease turning shallow towards one end;
+ * the public fandisk has two): its faded end has no corner. It is counted apart
+ * (one_face) and is no gap. */
 struct GraphGaps
 {
   std::size_t edges = 0;         // edge regions in all
-  std::size_t one_corner = 0;    // edges touching exactly one vertex
+  std::size_t one_corner = 0;    // edges touching exactly one vertex (one_face aside)
   std::size_t no_corner = 0;     // edges touching none (a closed loop needs none)
-  std::size_t not_two_faces = 0; // edges touching fewer or more than two faces
+  std::size_t not_two_faces = 0; // edges touching no face or more than two
+  std::size_t one_face = 0;      // edges touching one face: creases fading into it
   std::size_t lone_regions = 0;  // regions touching no other (with other regions)
 
   /** \brief Whether a gap that a closed part never has is there: an edge with one
    * corner or not between two faces, or a lone region (edges without any corner are
-   * left out: a circular rim is one). */
+   * left out: a circular rim is one; so are creases fading into their face). */
   bool any() const { return one_corner > 0 || not_two_faces > 0 || lone_regions > 0; }
 
   /** \brief One line for the user, e.g. "11 of 28 edges end at a corner on one side
    * only and 3 more at neither, 2 edges do not lie between two faces, 1 region touches
-   * no other"; empty when !any(). */
+   * no other (2 more edges have one face on both sides: creases fading into it)";
+   * empty when !any(). */
   std::string describe() const;
 };
 
