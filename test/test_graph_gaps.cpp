@@ -52,8 +52,6 @@ struct LabelledBox
     const auto last = static_cast<std::uint32_t>(classes.size());
     for (std::uint32_t& l : labels)
       l = l == gone ? into : l;
-    if (into == last)
-      into = gone;
     for (std::uint32_t& l : labels)
       l = l == last ? gone : l;
     classes[gone - 1] = classes[last - 1];
