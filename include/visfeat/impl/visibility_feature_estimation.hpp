@@ -12,14 +12,9 @@
 #include <visfeat/visibility_feature_estimation.h>
 #include <visfeat/voxel_band_from_cloud.h>
 
-#include <pcl/common/point_tests.h>
-
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cmath>
-#include <limits>
-#include <map>
 #include <new>
 #include <sstream>
 
@@ -245,149 +240,6 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::smoothedSurface(Run& run) cons
 
 template <typename PointInT, typename PointOutT>
 void
-VisibilityFeatureEstimation<PointInT, PointOutT>::labelPoints(
-  const Results& results,
-  const Run& run,
-  const PointCloudIn& surface,
-  PointCloudOut& output) const
-{
-  const PointLabeling labeling(results.band, results.segmentation,
-                               run.segmentation.point_feature_distance);
-  const float nan = std::numeric_limits<float>::quiet_NaN();
-  const GridSpec& grid = results.band.grid();
-  std::atomic<bool> dense{true};
-  // Points are independent: chunks of them on the map's threads.
-  constexpr std::size_t kPointsPerChunk = 4096;
-  parallelFor(indices_->size(), run.visibility.threads, kPointsPerChunk,
-              [&](std::size_t begin, std::size_t end) {
-                bool chunk_dense = true;
-                for (std::size_t i = begin; i < end; ++i) {
-                  const auto index = static_cast<std::size_t>((*indices_)[i]);
-                  const PointInT& p = (*input_)[index];
-                  // The point as the band saw it (smoothed in noise mode) and its cell:
-                  // the band's own record for points of the band's cloud, else the cell
-                  // it falls in.
-                  const PointInT& seen = fake_surface_ ? surface[index] : p;
-                  const CellId cell = bandCellOf(results.band, index);
-                  PointOutT& out = output[i];
-                  out.x = p.x;
-                  out.y = p.y;
-                  out.z = p.z;
-                  out.visibility_radius =
-                    cell == kNoCell ? nan
-                                    : static_cast<float>(results.map.radius(cell));
-                  const PointLabel label = labeling.labelOf(
-                    grid.toCellUnits(Eigen::Vector3d(seen.x, seen.y, seen.z)), cell);
-                  out.label = label.label;
-                  out.feature_class = static_cast<std::uint8_t>(label.feature_class);
-                  chunk_dense = chunk_dense && cell != kNoCell;
-                }
-                if (!chunk_dense)
-                  dense = false;
-              });
-  output.is_dense = dense;
-}
-
-template <typename PointInT, typename PointOutT>
-CellId
-VisibilityFeatureEstimation<PointInT, PointOutT>::bandCellOf(const VoxelBand& band,
-                                                             std::size_t index) const
-{
-  const PointInT& p = (*input_)[index];
-  if (!pcl::isXYZFinite(p))
-    return kNoCell;
-  return fake_surface_ ? band.pointCell()[index]
-                       : band.find(band.grid().cellOf(Eigen::Vector3d(p.x, p.y, p.z)));
-}
-
-template <typename PointInT, typename PointOutT>
-void
-VisibilityFeatureEstimation<PointInT, PointOutT>::claimCornerPoints(
-  Results& results,
-  const Run& run,
-  const PointCloudIn& surface,
-  PointCloudOut& output) const
-{
-  const double limit = kCornerClaimDistances * run.segmentation.point_feature_distance;
-  if (!(limit > 0.0) || run.segmentation.raw)
-    return;
-  std::vector<std::uint64_t> points_per_label(results.segmentation.regions().size() + 1,
-                                              0);
-  for (const PointOutT& p : output.points)
-    if (p.label < points_per_label.size())
-      ++points_per_label[p.label];
-  const auto vertices =
-    pointlessVertices(results.segmentation.cellLabels(),
-                      results.segmentation.regionClasses(), points_per_label);
-  if (vertices.empty())
-    return;
-  // The band cells within the claim distance of a pointless vertex's cells, and which
-  // vertices (few: a claim is the exception).
-  const VoxelBand& band = results.band;
-  const int reach = static_cast<int>(std::ceil(limit));
-  std::multimap<CellId, std::size_t> vertices_near;
-  for (std::size_t k = 0; k < vertices.size(); ++k) {
-    std::vector<CellId> near;
-    for (const CellId v : vertices[k].second)
-      for (int dz = -reach; dz <= reach; ++dz)
-        for (int dy = -reach; dy <= reach; ++dy)
-          for (int dx = -reach; dx <= reach; ++dx) {
-            const CellId c = band.find(band.coord(v) + CellCoord(dx, dy, dz));
-            if (c != kNoCell)
-              near.push_back(c);
-          }
-    std::sort(near.begin(), near.end());
-    near.erase(std::unique(near.begin(), near.end()), near.end());
-    for (const CellId c : near)
-      vertices_near.emplace(c, k);
-  }
-  const auto vertex = static_cast<std::uint8_t>(FeatureClass::kVertex);
-  std::vector<double> best(vertices.size(), limit * limit);
-  std::vector<std::size_t> best_point(vertices.size(), output.size());
-  const GridSpec& grid = band.grid();
-  for (std::size_t i = 0; i < output.size(); ++i) {
-    if (output[i].feature_class == vertex)
-      continue; // another vertex's point stays its own
-    // the point as the band saw it, and its cell (as in labelPoints)
-    const auto index = static_cast<std::size_t>((*indices_)[i]);
-    const CellId cell = bandCellOf(band, index);
-    const PointInT& p = fake_surface_ ? surface[index] : (*input_)[index];
-    const auto [first, last] = vertices_near.equal_range(cell);
-    if (cell == kNoCell || first == last)
-      continue;
-    const Eigen::Vector3d q = grid.toCellUnits(Eigen::Vector3d(p.x, p.y, p.z));
-    for (auto it = first; it != last; ++it) {
-      const std::size_t k = it->second;
-      for (const CellId v : vertices[k].second) {
-        const double d2 =
-          (q - band.coord(v).cast<double>() - Eigen::Vector3d::Constant(0.5))
-            .squaredNorm();
-        if (d2 < best[k] || (d2 == best[k] && best_point[k] == output.size())) {
-          best[k] = d2;
-          best_point[k] = i;
-        }
-      }
-    }
-  }
-  bool claimed = false;
-  for (std::size_t k = 0; k < vertices.size(); ++k) {
-    const std::size_t i = best_point[k];
-    if (i == output.size() || output[i].feature_class == vertex)
-      continue; // none near, or the nearest of two vertices: the first keeps it
-    output[i].label = vertices[k].first;
-    output[i].feature_class = vertex;
-    claimed = true;
-  }
-  if (claimed) { // the nodes' point geometry; cells, arcs and angles stay
-    RegionPointGeometry geometry(results.segmentation.regions().size());
-    for (const PointOutT& p : output.points)
-      geometry.add(p.label, Eigen::Vector3d(p.x, p.y, p.z));
-    geometry.applyTo(results.graph);
-  }
-}
-
-template <typename PointInT, typename PointOutT>
-void
 VisibilityFeatureEstimation<PointInT, PointOutT>::buildGraph(
   Results& results, const Run& run, const PointCloudOut& output) const
 {
@@ -596,9 +448,11 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::computeFeature(PointCloudOut& 
 
 } // namespace visfeat
 
-// the creases where faces touch; the resolution, its search, the grid and the fill
+// the creases where faces touch; the per-point labels; the resolution, its search, the
+// grid and the fill
 #include <visfeat/impl/visibility_feature_checks.hpp>
 #include <visfeat/impl/visibility_feature_contacts.hpp>
+#include <visfeat/impl/visibility_feature_labels.hpp>
 #include <visfeat/impl/visibility_feature_resolution.hpp>
 
 #define PCL_INSTANTIATE_VisibilityFeatureEstimation(T, OUTT)                           \
