@@ -9,8 +9,10 @@
 #                                20 minutes: invariance (every model under 20
 #                                rotations and in survey coordinates, 4-13 minutes on
 #                                2 cores) and extended (the noisy models' rotations 2
-#                                and 3, the meshes at 1024, the whole
-#                                maps with noise or a cap of 24: ~7 minutes)
+#                                and 3, the meshes at 1024, the sparse clouds of
+#                                20,000 and 40,000 points, four of the seven whole
+#                                maps, the whole maps with noise or a cap of 24:
+#                                ~11 minutes)
 #   scripts/test.sh --invariance the same as --full (its older name)
 # Warnings are errors. Exits non-zero on any failure (with --fuzz: a crash, a hang
 # over 10 s, a sanitizer report or over 2 GiB of memory; the input is left in
@@ -28,7 +30,7 @@ for arg in "$@"; do
     --fuzz) mode=fuzz ;;
     --full|--invariance) full=1 ;;
     -h|--help)
-      sed -n '2,16p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'
+      sed -n '2,18p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'
       exit 0 ;;
     *) echo "test.sh: unknown argument: $arg" >&2; exit 2 ;;
   esac
