@@ -8,7 +8,7 @@
 #   scripts/test.sh --full       also the labels left out by default to keep CI under
 #                                20 minutes: invariance (every model under 20
 #                                rotations and in survey coordinates, 4-13 minutes on
-#                                2 cores) and extended (the noisy models' rotations 2
+#                                2 cores) and extended (every model's rotations 2
 #                                and 3, the meshes at 1024, the sparse clouds of
 #                                20,000 and 40,000 points, four of the seven whole
 #                                maps, the whole maps with noise or a cap of 24:
