@@ -4,7 +4,6 @@
 
 #include "cad_fixtures.h"
 #include <support/cad_models.h>
-#include <support/portable_random.h>
 #include <support/synthetic_shapes.h>
 #include <visfeat/core/common/error.h>
 
@@ -15,7 +14,6 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
-#include <random>
 #include <set>
 #include <string>
 #include <vector>

@@ -5,16 +5,11 @@
 #include "cad_fixtures.h"
 #include <support/cad_models.h>
 #include <support/portable_random.h>
-#include <support/synthetic_shapes.h>
-#include <visfeat/core/common/error.h>
 
 #include <gtest/gtest.h>
 
-#include <nlohmann/json.hpp>
-
 #include <algorithm>
 #include <cmath>
-#include <map>
 #include <random>
 #include <set>
 #include <string>

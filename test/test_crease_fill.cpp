@@ -10,8 +10,6 @@
 #include <visfeat/core/band/local_triangles.h>
 #include <visfeat/core/band/triangle_cells.h>
 #include <visfeat/core/band/voxel_band.h>
-#include <visfeat/core/common/error.h>
-#include <visfeat/surface_fill.h>
 
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>
@@ -21,7 +19,6 @@
 #include <limits>
 #include <random>
 #include <set>
-#include <tuple>
 #include <vector>
 
 namespace {

@@ -6,7 +6,6 @@
 
 #include "band_fixtures.h"
 
-#include <support/cad_models.h>
 #include <visfeat/point_types.h>
 #include <visfeat/resolution_estimation.h>
 #include <visfeat/visibility_feature_estimation.h>

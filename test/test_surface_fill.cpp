@@ -5,8 +5,6 @@
 #include "band_fixtures.h"
 #include "fill_fixtures.h"
 
-#include <visfeat/core/band/crease_fill.h>
-#include <visfeat/core/band/crease_strips.h>
 #include <visfeat/core/band/local_triangles.h>
 #include <visfeat/core/band/triangle_cells.h>
 #include <visfeat/core/band/voxel_band.h>
@@ -21,7 +19,6 @@
 #include <limits>
 #include <random>
 #include <set>
-#include <tuple>
 #include <vector>
 
 namespace {

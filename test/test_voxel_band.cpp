@@ -3,24 +3,18 @@
 
 #include "band_fixtures.h"
 #include "voxel_band_checks.h"
-#include <support/cad_catalogue.h>
-#include <support/cad_sampling.h>
 #include <support/portable_random.h>
-#include <support/synthetic_shapes.h>
 
 #include <visfeat/core/band/voxel_band.h>
 #include <visfeat/core/common/error.h>
 #include <visfeat/core/grid/cell_index.h>
-#include <visfeat/voxel_band_from_cloud.h>
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <functional>
-#include <limits>
 #include <map>
-#include <numeric>
 #include <random>
 #include <set>
 
