@@ -1,5 +1,6 @@
 // bridgesToCorners: an edge region that stops short of its corner (the faces filled
-// the gap) is bridged to the corner ahead on its line through the faces' cells; an
+// the gap) is bridged to the corner ahead on its line through the faces' cells (or to
+// the one corner of both faces near its end, off its line); an
 // edge with both corners, an edge whose corner lies beyond the reach and a dangling
 // edge with no corner ahead (an open scan's border) get none.
 
@@ -116,6 +117,45 @@ TEST(EdgeBridges, AnEdgeWithBothCornersGetsNone)
   ASSERT_EQ(sheet.graph.verticesOfEdge(3), (std::vector<std::uint32_t>{4, 5}));
   EXPECT_TRUE(
     visfeat::bridgesToCorners(sheet.band, sheet.labels, sheet.graph, 48.0).empty());
+}
+
+/** The crease of shortEdge(20) and corners off its line: V5 (x 28..31, y 18..36,
+ * centroid 9.5 cells ahead of the edge's end and 7.5 beside its line, touching both
+ * faces) and, with `second`, V6 (x 33..36, y 4..21: 14.5 ahead, 7 beside). */
+std::function<std::uint32_t(int, int)>
+cornersOffTheLine(bool second)
+{
+  return [=](int x, int y) -> std::uint32_t {
+    if (x >= 28 && x <= 31 && y >= 18 && y <= 36)
+      return 5;
+    if (second && x >= 33 && x <= 36 && y >= 4 && y <= 21)
+      return 6;
+    if ((y == 19 || y == 20) && x <= 20)
+      return x <= 3 ? 4 : 3;
+    return y < 20 ? 1 : 2;
+  };
+}
+
+TEST(EdgeBridges, TheOneCornerOfBothFacesNearTheEndIsBridgedOffTheLine)
+{
+  // a sparse cloud's corner region may form beside the true corner: off the cone of
+  // the line (7.5 > 3 + 9.5 / 4 cells), but the only vertex of both faces within
+  // half the reach of the edge's end
+  const std::vector<FeatureClass> classes{kF, kF, kE, kV, kV, kV};
+  const Sheet sheet(classes, cornersOffTheLine(false));
+  ASSERT_EQ(sheet.graph.verticesOfEdge(3), std::vector<std::uint32_t>{4});
+  ASSERT_EQ(sheet.graph.neighbours(5, kF), (std::vector<std::uint32_t>{1, 2}));
+  const std::vector<visfeat::EdgeBridge> bridges =
+    visfeat::bridgesToCorners(sheet.band, sheet.labels, sheet.graph, 48.0);
+  ASSERT_EQ(bridges.size(), 1u);
+  EXPECT_EQ(bridges[0].vertex, 5u);
+  EXPECT_EQ(bridges[0].cells.size(), 7u); // x = 21..27 on the crease's rows
+  // beyond half the reach (12.1 cells from the end): none
+  EXPECT_TRUE(
+    visfeat::bridgesToCorners(sheet.band, sheet.labels, sheet.graph, 24.0).empty());
+  // two such corners: which one is the edge's is not known, so none
+  const Sheet two(classes, cornersOffTheLine(true));
+  EXPECT_TRUE(visfeat::bridgesToCorners(two.band, two.labels, two.graph, 48.0).empty());
 }
 
 TEST(EdgeBridges, LabelsOfAnotherBandAreRefused)

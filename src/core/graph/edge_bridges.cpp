@@ -124,8 +124,9 @@ bridgesToCorners(const VoxelBand& band,
     for (const CellId c : cells_of[e])
       end = std::max(end, line.dot(centreOf(band, c) - mean));
 
-    // the corner ahead
-    std::uint32_t corner = 0;
+    // the corner ahead: on the line, else the one vertex of both faces near the end
+    std::uint32_t corner = 0, near_end = 0;
+    int near_end_count = 0;
     double nearest = std::numeric_limits<double>::infinity();
     for (std::uint32_t v = 1; v <= n; ++v) {
       if (v == vertices[0] || graph.node(v).feature_class != FeatureClass::kVertex ||
@@ -138,12 +139,20 @@ bridgesToCorners(const VoxelBand& band,
       const Eigen::Vector3d to = meanOf(band, cells_of[v]) - mean;
       const double along = line.dot(to) - end;
       const double lateral = (to - line.dot(to) * line).norm();
-      if (along > 0.0 && along <= max_reach &&
-          lateral <= kBridgeLateralCells + 0.25 * along && along < nearest) {
+      if (along <= 0.0)
+        continue;
+      if (along <= max_reach && lateral <= kBridgeLateralCells + 0.25 * along &&
+          along < nearest) {
         nearest = along;
         corner = v;
       }
+      if (std::hypot(along, lateral) <= kBridgeOffLineShare * max_reach) {
+        near_end = v;
+        ++near_end_count;
+      }
     }
+    if (corner == 0 && near_end_count == 1)
+      corner = near_end;
     if (corner == 0)
       continue;
     std::vector<CellId> end_cells;
