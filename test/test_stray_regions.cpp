@@ -1,7 +1,8 @@
 // strayRegionMerge: vertex regions along an edge instead of at its ends join their
 // edge or the face of their edges, a corner split in two is joined, face specks at a
 // corner join the corner; ends of edges, T-junctions, corners (of a short crease, of a
-// lens) and faces bounded by edges stay.
+// lens) and faces bounded by edges stay; cornerSpurMerge: an edge of too few points for
+// a turn, dead ending at a corner, joins it.
 
 #include <visfeat/core/band/voxel_band.h>
 #include <visfeat/core/common/feature_class.h>
@@ -372,6 +373,46 @@ TEST(StrayRegions, TheSplitCornerRuleAloneLeavesStrayVertices)
   const Sheet sheet(classes, blobBesideACrease);
   ASSERT_NE(sheet.strayMerge(), identity(6));
   EXPECT_EQ(visfeat::splitCornerMerge(sheet.graph), identity(6));
+}
+
+/** A spur: E3 (y 19..20, x 4..7) between F1 (below) and F2 (above), dead ending at
+ * corner V4 (x <= 3, y 17..22), with 8 points (one a cell) and no measured turn,
+ * joins V4; with
+ * a measured turn, with the points a side of a sample needs, or with a corner at
+ * both ends (V5, x 9..11, y 17..22) it stays. */
+TEST(StrayRegions, AnEdgeOfTooFewPointsForATurnDeadEndingAtACornerJoinsIt)
+{
+  const std::vector<FeatureClass> classes{kF, kF, kE, kV, kV};
+  const auto layout = [](bool second_corner) {
+    return [=](int x, int y) -> std::uint32_t {
+      if (x <= 3 && in(y, 17, 22))
+        return 4;
+      if (second_corner && in(x, 9, 11) && in(y, 17, 22))
+        return 5;
+      if (in(y, 19, 20) && in(x, 4, 7))
+        return 3;
+      return y < 20 ? 1 : 2;
+    };
+  };
+  Sheet spur(classes, layout(false));
+  ASSERT_EQ(spur.graph.verticesOfEdge(3), std::vector<std::uint32_t>{4});
+  ASSERT_EQ(spur.graph.node(3).points, 8u);
+  Labels joined = identity(5);
+  joined[3] = 4;
+  EXPECT_EQ(visfeat::cornerSpurMerge(spur.graph, 10), joined);
+  // few points, but a measured turn: a crease
+  spur.graph.setCreaseAngle(3, 30.0);
+  EXPECT_EQ(visfeat::cornerSpurMerge(spur.graph, 10), identity(5));
+  // no measured turn, but the points of a sample's side
+  Sheet with_points(classes, layout(false));
+  with_points.graph.setPointGeometry(3, 10, Eigen::Vector3d::Zero(),
+                                     Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero());
+  EXPECT_EQ(visfeat::cornerSpurMerge(with_points.graph, 10), identity(5));
+  EXPECT_EQ(visfeat::cornerSpurMerge(with_points.graph, 11), joined);
+  // a corner at both ends: a short crease between two corners
+  const Sheet both(classes, layout(true));
+  ASSERT_EQ(both.graph.verticesOfEdge(3), (std::vector<std::uint32_t>{4, 5}));
+  EXPECT_EQ(visfeat::cornerSpurMerge(both.graph, 10), identity(5));
 }
 
 } // namespace

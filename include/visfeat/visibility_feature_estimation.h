@@ -534,7 +534,9 @@ private:
    * (locateContactCreases()); cells, points, graph and crease angles follow. */
   void addContactCreases(Results& results, const Run& run, PointCloudOut& output) const;
   /** Last: two vertex regions that share two edges, one going on to a third vertex,
-   * are one corner (splitCornerMerge; a contact corner beside a corner). */
+   * are one corner (splitCornerMerge; a contact corner beside a corner); then an edge
+   * of too few points for a turn, dead ending at a corner, joins it (cornerSpurMerge).
+   */
   void joinSplitCorners(Results& results, const Run& run, PointCloudOut& output) const;
   /** Then an edge that stops short of its corner is bridged to it (bridgesToCorners;
    * clouds only). */

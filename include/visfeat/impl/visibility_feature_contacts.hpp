@@ -168,6 +168,14 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::joinSplitCorners(
   detail::restoreCreaseAngles(
     results.graph, angle_of,
     applyRegionMerge(results, run, output, splitCornerMerge(results.graph)));
+  // Then a few cells of ridge at a corner, too few points to measure a turn, dead
+  // ending there (cornerSpurMerge), join the corner.
+  const std::vector<double> spur_angle_of = detail::creaseAnglesOf(results.graph);
+  detail::restoreCreaseAngles(
+    results.graph, spur_angle_of,
+    applyRegionMerge(
+      results, run, output,
+      cornerSpurMerge(results.graph, CreaseAngleParameters::kMinSidePoints)));
 }
 
 template <typename PointInT, typename PointOutT>

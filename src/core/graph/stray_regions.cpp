@@ -245,4 +245,22 @@ strayRegionMerge(const TopologyGraph& graph)
   return into;
 }
 
+std::vector<std::uint32_t>
+cornerSpurMerge(const TopologyGraph& graph, std::uint64_t min_points)
+{
+  const std::size_t n = graph.size();
+  std::vector<std::uint32_t> into(n + 1);
+  std::iota(into.begin(), into.end(), 0u);
+  for (std::uint32_t e = 1; e <= n; ++e) {
+    const GraphNode& node = graph.node(e);
+    if (node.feature_class != FeatureClass::kEdge || std::isfinite(node.crease_angle) ||
+        node.points >= min_points)
+      continue;
+    const std::vector<std::uint32_t> vertices = graph.verticesOfEdge(e);
+    if (vertices.size() == 1)
+      into[e] = vertices[0]; // vertices join nothing here: no chain
+  }
+  return into;
+}
+
 } // namespace visfeat
