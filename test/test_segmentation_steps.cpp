@@ -290,6 +290,49 @@ TEST(SegmentationSteps, ACornerWithoutACoreIsWhereThreeFreeEdgeEndsMeet)
   EXPECT_EQ(f.classCounts()[2], 3u);
 }
 
+// The T without its corner core, and without the band around the corner: the cells
+// within `hole` (Chebyshev) of (10, 10) are missing, as where a sparse cloud's samples
+// stop short of a sharp tip. The edges' lines meet off the band; the corner is the
+// band cell nearest to their meeting point within 4 cells, or none.
+TEST(SegmentationSteps, ACornerBeyondTheBandIsTheNearestBandCell)
+{
+  const auto tWithoutTip = [](int hole, int gap) {
+    const std::vector<Line> lines{{10, 0, 10, 10}, {0, 10, 20, 10}};
+    const std::vector<Line> cores{
+      {10, 0, 10, 10 - gap}, {0, 10, 10 - gap, 10}, {10 + gap, 10, 20, 10}};
+    return visfeat_test::sheetFromRadius(21, 21, kCap, [&](int x, int y) {
+      if (std::abs(x - 10) <= hole && std::abs(y - 10) <= hole)
+        return -1;
+      if (lineDistance(cores, x, y) == 0)
+        return 3;
+      const int d = lineDistance(lines, x, y);
+      return d <= 2 ? 2 : (d == 3 ? 1 : 3);
+    });
+  };
+  SegmentationParameters p = smallParameters();
+  p.vertex_reach = 8;
+  const auto vertexNear = [](const Sheet& sheet, const FeatureSegmentation& s) {
+    for (int y = 6; y <= 14; ++y)
+      for (int x = 6; x <= 14; ++x)
+        if (sheet.at(x, y) != visfeat::kNoCell &&
+            classAt(sheet, s, x, y) == FeatureClass::kVertex)
+          return true;
+    return false;
+  };
+  // the nearest band cells 3 cells from the meeting point
+  const Sheet cut = tWithoutTip(2, 3);
+  ASSERT_EQ(cut.at(10, 10), visfeat::kNoCell);
+  const auto s = FeatureSegmentation::compute(cut.band, cut.map, p);
+  EXPECT_EQ(s.classCounts()[1], 1u);
+  EXPECT_EQ(s.classCounts()[2], 3u);
+  EXPECT_TRUE(vertexNear(cut, s));
+  // 5 cells away: no corner
+  const Sheet far = tWithoutTip(4, 5);
+  const auto f = FeatureSegmentation::compute(far.band, far.map, p);
+  EXPECT_EQ(f.classCounts()[1], 0u);
+  EXPECT_EQ(f.classCounts()[2], 3u);
+}
+
 // An edge A|C (y = 20) in three pieces: x 0..16, a one-cell core at (20, 20), x
 // 24..40. Above, face A holds an island B, bounded by the edge loop x in {2, 14}, y in
 // {0, 12}, 14 steps from the middle core.

@@ -47,6 +47,15 @@ constexpr double kCornerCells = 1.5;
  * rotation 4004: three edges ended 6-10 cells short of a corner without a region). */
 constexpr std::size_t kMinFreeCornerEdges = 3;
 
+/** The meeting point of a corner's edge lines may lie beyond the band: the tip of a
+ * sharp corner is cut where the samples stop short of it, up to about a point spacing
+ * on the sparsest filled clouds (the fill allows 4 cells a spacing). The corner is
+ * then the band cell nearest to it within this many cells (its edges are drawn to
+ * that cell). Found on the triangular prism at 10,000 points
+ * (seeds 49 and 54, 4 cells a spacing): three free ends 10-17 cells apart met 2.2
+ * cells outside the grid, and the corner was lost. */
+constexpr int kCornerBeyondBandCells = 4;
+
 /** Shortest segment length divided by, against a segment of length 0. Numeric guard.
  */
 constexpr double kMinSegmentLength = 1e-9;
@@ -90,9 +99,10 @@ meetingPoint(const ThinningState& state, const std::vector<std::uint32_t>& edges
   return Eigen::Vector3d(a.ldlt().solve(b));
 }
 
-/** The point nearest to the lines of a vertex's straight edges (meetingPoint); none
- * when the lines are nearly parallel, when it lies farther than vertex_reach from the
- * vertex's cores, or outside the band. */
+/** The point nearest to the lines of a vertex's straight edges (meetingPoint), or
+ * where it lies outside the band the band cell nearest to it within
+ * kCornerBeyondBandCells; none when the lines are nearly parallel, when it lies
+ * farther than vertex_reach from the vertex's cores, or farther from the band. */
 std::optional<Eigen::Vector3d>
 cornerOf(const ThinningState& state,
          std::uint32_t vertex,
@@ -106,10 +116,15 @@ cornerOf(const ThinningState& state,
   for (const CellId c : valueOrEmpty(state.vertex_cores, vertex))
     to_vertex =
       std::min(to_vertex, (state.band.coord(c).cast<double>() - corner).norm());
-  if (!(to_vertex <= state.parameters.vertex_reach) ||
-      state.nearestCell(corner) == kNoCell)
+  if (!(to_vertex <= state.parameters.vertex_reach))
     return std::nullopt;
-  return corner;
+  if (state.nearestCell(corner) != kNoCell)
+    return corner;
+  // beyond the band (a sharp tip cut short): the band cell nearest to it
+  const CellId tip = state.nearestCellWithin(corner, kCornerBeyondBandCells);
+  if (tip == kNoCell)
+    return std::nullopt;
+  return state.band.coord(tip).cast<double>();
 }
 
 /** The end of an edge's cores on the corner's side, as a position t along its line:
@@ -247,7 +262,7 @@ cornersAtFreeEnds(ThinningState& state)
     const std::optional<Eigen::Vector3d> corner = meetingPoint(state, edges);
     if (!corner)
       continue;
-    const CellId at = state.nearestCell(*corner);
+    const CellId at = state.nearestCellWithin(*corner, kCornerBeyondBandCells);
     bool near = at != kNoCell;
     for (const FreeEnd& f : ends)
       near =

@@ -120,5 +120,26 @@ ThinningState::nearestCell(const Eigen::Vector3d& x) const
   return best;
 }
 
+CellId
+ThinningState::nearestCellWithin(const Eigen::Vector3d& x, int radius) const
+{
+  const CellCoord at = x.array().round().cast<int>().matrix();
+  CellId best = kNoCell;
+  double best_distance = std::numeric_limits<double>::infinity();
+  for (int dz = -radius; dz <= radius; ++dz)
+    for (int dy = -radius; dy <= radius; ++dy)
+      for (int dx = -radius; dx <= radius; ++dx) {
+        const CellId c = band.find(at + CellCoord(dx, dy, dz));
+        if (c == kNoCell)
+          continue;
+        const double d = (band.coord(c).cast<double>() - x).norm();
+        if (d < best_distance && d <= radius) {
+          best_distance = d;
+          best = c;
+        }
+      }
+  return best;
+}
+
 } // namespace segmentation
 } // namespace visfeat

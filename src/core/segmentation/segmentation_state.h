@@ -173,6 +173,10 @@ struct ThinningState
   /** \brief The band cell among the 27 around round(x) (cell index units) nearest to
    * x; kNoCell if none is in the band. */
   CellId nearestCell(const Eigen::Vector3d& x) const;
+
+  /** \brief The band cell within `radius` cells of x (a cube of cells around round(x))
+   * nearest to x, the first in z, y, x order among equals; kNoCell if none. */
+  CellId nearestCellWithin(const Eigen::Vector3d& x, int radius) const;
 };
 
 /** \brief A segment drawn through cells takes this many samples per cell of its
