@@ -158,6 +158,33 @@ TEST(EdgeBridges, TheOneCornerOfBothFacesNearTheEndIsBridgedOffTheLine)
   EXPECT_TRUE(visfeat::bridgesToCorners(two.band, two.labels, two.graph, 48.0).empty());
 }
 
+TEST(EdgeBridges, ACornerThatTouchesOnlyItsOtherEdgesIsReachedWithinTheGraphsReach)
+{
+  // V5 (x 30..31, y 19..20) ringed by the cells of another edge E6 (x 29..32, y
+  // 18..21): no face cell touches it, but the face cells 2 steps away join it in the
+  // graph (dilation radius 2)
+  const std::vector<FeatureClass> classes{kF, kF, kE, kV, kV, kE};
+  const Sheet sheet(classes, [](int x, int y) -> std::uint32_t {
+    if (x >= 29 && x <= 32 && y >= 18 && y <= 21)
+      return x >= 30 && x <= 31 && y >= 19 && y <= 20 ? 5 : 6;
+    if ((y == 19 || y == 20) && x <= 20)
+      return x <= 3 ? 4 : 3;
+    return y < 20 ? 1 : 2;
+  });
+  ASSERT_EQ(sheet.graph.verticesOfEdge(3), std::vector<std::uint32_t>{4});
+  EXPECT_TRUE(
+    visfeat::bridgesToCorners(sheet.band, sheet.labels, sheet.graph, 48.0, 0).empty());
+  const std::vector<visfeat::EdgeBridge> bridges =
+    visfeat::bridgesToCorners(sheet.band, sheet.labels, sheet.graph, 48.0, 2);
+  ASSERT_EQ(bridges.size(), 1u);
+  EXPECT_EQ(bridges[0].vertex, 5u);
+  ASSERT_EQ(bridges[0].cells.size(), 8u); // x = 21..28: x = 28 is 2 steps from V5
+  EXPECT_EQ(sheet.band.coord(bridges[0].cells.back()).x(), 28);
+  EXPECT_THROW(
+    visfeat::bridgesToCorners(sheet.band, sheet.labels, sheet.graph, 48.0, -1),
+    visfeat::Error);
+}
+
 TEST(EdgeBridges, LabelsOfAnotherBandAreRefused)
 {
   const Sheet sheet(kClasses, shortEdge(20));

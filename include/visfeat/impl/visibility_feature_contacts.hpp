@@ -190,7 +190,7 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::bridgeEdgesToCorners(
     return;
   const std::vector<EdgeBridge> bridges =
     bridgesToCorners(results.band, results.segmentation.cellLabels(), results.graph,
-                     2.0 * run.segmentation.vertex_reach);
+                     2.0 * run.segmentation.vertex_reach, run.graph.dilation_radius);
   if (bridges.empty())
     return;
   const std::vector<double> angle_of = detail::creaseAnglesOf(results.graph);

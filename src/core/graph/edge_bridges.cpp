@@ -37,14 +37,39 @@ contains(const std::vector<std::uint32_t>& list, std::uint32_t x)
   return std::find(list.begin(), list.end(), x) != list.end();
 }
 
+/** Per band cell, whether it lies within `steps` 6-steps of a cell of `cells` (through
+ * any band cells). */
+std::vector<char>
+withinSteps(const VoxelBand& band, const std::vector<CellId>& cells, int steps)
+{
+  std::vector<char> near(band.size(), 0);
+  std::vector<CellId> ring(cells.begin(), cells.end()), next;
+  for (const CellId c : cells)
+    near[static_cast<std::size_t>(c)] = 1;
+  for (int k = 0; k < steps; ++k) {
+    next.clear();
+    for (const CellId c : ring)
+      for (const CellId n : band.neighbours(c))
+        if (n != kNoCell && !near[static_cast<std::size_t>(n)]) {
+          near[static_cast<std::size_t>(n)] = 1;
+          next.push_back(n);
+        }
+    ring.swap(next);
+  }
+  return near;
+}
+
 /** Shortest path of 6-steps from `from` to a cell labelled `target` through cells of
- * face regions, at most max_steps: its face cells in order, or empty. */
+ * face regions, at most max_steps: its face cells in order, or empty. A face cell
+ * marked in `ends_near` (within the graph's reach of the target) ends the path too,
+ * as its last cell. */
 std::vector<CellId>
 shortestPath(const VoxelBand& band,
              const std::vector<std::uint32_t>& labels,
              const TopologyGraph& graph,
              const std::vector<CellId>& from,
              std::uint32_t target,
+             const std::vector<char>& ends_near,
              int max_steps)
 {
   std::vector<CellId> visited(from.begin(), from.end());
@@ -74,6 +99,15 @@ shortestPath(const VoxelBand& band,
         seen[static_cast<std::size_t>(n)] = 1;
         visited.push_back(n);
         parent.push_back(static_cast<int>(i));
+        if (ends_near[static_cast<std::size_t>(n)]) {
+          std::vector<CellId> path;
+          for (int at = static_cast<int>(visited.size()) - 1;
+               parent[static_cast<std::size_t>(at)] >= 0;
+               at = parent[static_cast<std::size_t>(at)])
+            path.push_back(visited[static_cast<std::size_t>(at)]);
+          std::reverse(path.begin(), path.end());
+          return path;
+        }
       }
     begin = end;
   }
@@ -86,8 +120,11 @@ std::vector<EdgeBridge>
 bridgesToCorners(const VoxelBand& band,
                  const std::vector<std::uint32_t>& cell_labels,
                  const TopologyGraph& graph,
-                 double max_reach)
+                 double max_reach,
+                 int reach_steps)
 {
+  if (reach_steps < 0)
+    throw Error("edge bridges: negative reach of the graph");
   if (cell_labels.size() != band.size())
     throw Error("edge bridges: one label per band cell is needed");
   const std::size_t n = graph.size();
@@ -162,7 +199,8 @@ bridgesToCorners(const VoxelBand& band,
     const int max_steps =
       static_cast<int>(std::ceil(std::sqrt(3.0) * (max_reach + 3.0))) + 3;
     std::vector<CellId> path =
-      shortestPath(band, cell_labels, graph, end_cells, corner, max_steps);
+      shortestPath(band, cell_labels, graph, end_cells, corner,
+                   withinSteps(band, cells_of[corner], reach_steps), max_steps);
     if (!path.empty())
       bridges.push_back(EdgeBridge{e, corner, std::move(path)});
   }

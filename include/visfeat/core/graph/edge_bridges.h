@@ -64,17 +64,25 @@ constexpr double kBridgeOffLineShare = 0.5;
  * bridge is the shortest path of 6-steps from the edge's end cells (within 2 cells of
  * the end along the line) to a cell of v through the cells of face regions only (f1,
  * f2, or a third face of v that leaked around the corner: U prism, seed 33), never
- * through an edge or vertex, at most sqrt(3) (max_reach + 3) + 3 steps; none when there
- * is no such path.
+ * through an edge or vertex, at most sqrt(3) (max_reach + 3) + 3 steps, or to the
+ * first face cell within reach_steps 6-steps of a cell of v (through any band cells):
+ * the graph joins regions that close (TopologyGraphParameters::dilation_radius), and
+ * a small corner region at a sharp tip may touch only its other edges (a
+ * tetrahedron's 2-cell tip at 10,000 points, seed 52: faces 2 and 5 steps away); none
+ * when there is no such path.
  *
  * \param[in] cell_labels per band cell, its region label (0: none)
  * \param[in] graph the regions' graph (labels 1..graph.size())
  * \param[in] max_reach cells (e.g. 2 x SegmentationParameters::vertex_reach)
+ * \param[in] reach_steps 6-steps (e.g. the graph's dilation_radius; 0: the path
+ *            reaches a cell of v itself)
  * \return the bridges, by ascending edge label, at most one per edge.
- * \throws visfeat::Error when cell_labels does not have one label per band cell. */
+ * \throws visfeat::Error when cell_labels does not have one label per band cell or
+ *         reach_steps is negative. */
 std::vector<EdgeBridge> bridgesToCorners(const VoxelBand& band,
                                          const std::vector<std::uint32_t>& cell_labels,
                                          const TopologyGraph& graph,
-                                         double max_reach);
+                                         double max_reach,
+                                         int reach_steps = 0);
 
 } // namespace visfeat
