@@ -65,17 +65,21 @@ TEST(CadModels, SamplingIsUniformWithinFaces)
   // Cube: on a face of side s, the points within d of the face's boundary are
   // 1 - (1 - 2d/s)^2 of it, and that boundary is the nearest sharp curve.
   const std::size_t n = 60000;
+  // share of the samples within d of a sharp curve, against the share of the area
+  const auto expectShareWithin = [n](const syn::CadSamples& samples, double d,
+                                     double expected) {
+    const double got = static_cast<double>(std::count_if(
+                         samples.curve_distance.begin(), samples.curve_distance.end(),
+                         [&](double x) { return x < d; })) /
+                       static_cast<double>(n);
+    EXPECT_NEAR(got, expected, 5.0 * std::sqrt(expected * (1 - expected) / n))
+      << "d = " << d;
+  };
   const syn::CadModel cube = syn::cadModelByName("cube");
   const double side = 2.0 / std::sqrt(3.0);
   const syn::CadSamples s = sample(cube, n, 31);
   for (double d : {0.05, 0.15, 0.3}) {
-    const double expected = 1.0 - std::pow(1.0 - 2.0 * d / side, 2);
-    const double got = static_cast<double>(
-                         std::count_if(s.curve_distance.begin(), s.curve_distance.end(),
-                                       [&](double x) { return x < d; })) /
-                       static_cast<double>(n);
-    EXPECT_NEAR(got, expected, 5.0 * std::sqrt(expected * (1 - expected) / n))
-      << "d = " << d;
+    expectShareWithin(s, d, 1.0 - std::pow(1.0 - 2.0 * d / side, 2));
   }
   // Cylinder (r 1, h 2): within d of a rim: the ring 1 - (1 - d)^2 of each disc and
   // 2d/h of the lateral face.
@@ -84,13 +88,7 @@ TEST(CadModels, SamplingIsUniformWithinFaces)
   for (double d : {0.05, 0.2, 0.5}) {
     const double near_area =
       2 * kPi * (1.0 - std::pow(1.0 - d, 2)) + 2 * kPi * 2.0 * (2.0 * d / 2.0);
-    const double expected = near_area / cyl.area();
-    const double got = static_cast<double>(
-                         std::count_if(c.curve_distance.begin(), c.curve_distance.end(),
-                                       [&](double x) { return x < d; })) /
-                       static_cast<double>(n);
-    EXPECT_NEAR(got, expected, 5.0 * std::sqrt(expected * (1 - expected) / n))
-      << "d = " << d;
+    expectShareWithin(c, d, near_area / cyl.area());
   }
 }
 

@@ -5,6 +5,7 @@
 
 #include "band_fixtures.h"
 #include "reference/brute_force.h"
+#include "shuffled_cloud.h"
 #include <support/portable_random.h>
 
 #include <visfeat/point_types.h>
@@ -22,6 +23,7 @@
 #include <memory>
 #include <numeric>
 #include <random>
+#include <utility>
 
 namespace {
 
@@ -254,14 +256,10 @@ TEST(Estimator, IndicesSelectTheOutputPoints)
 TEST(Estimator, SameOutputForShuffledPointsAndThreadCounts)
 {
   const Cloud::Ptr cloud = cloudWithNaNs(64, 24);
-  std::vector<std::size_t> perm(cloud->size());
-  std::iota(perm.begin(), perm.end(), 0);
-  std::mt19937_64 rng(9);
-  visfeat::synthetic::shuffle(perm, rng);
-  Cloud::Ptr shuffled(new Cloud);
-  for (std::size_t i : perm)
-    shuffled->push_back(cloud->points[i]);
-  shuffled->is_dense = false;
+  visfeat_test::ShuffledCloud<pcl::PointXYZ> shuffled_points =
+    visfeat_test::shuffledCloud(*cloud, 9);
+  const std::vector<std::size_t>& perm = shuffled_points.order;
+  const Cloud::Ptr shuffled(new Cloud(std::move(shuffled_points.cloud)));
 
   Output a, b, c, d;
   Estimator ea, eb, ec, ed;

@@ -4,6 +4,7 @@
 
 #include "band_fixtures.h"
 #include "reference/brute_force.h"
+#include "shuffled_cloud.h"
 #include <support/portable_random.h>
 
 #include <visfeat/core/band/voxel_band.h>
@@ -269,13 +270,7 @@ TEST(VisibilityMap, SameRadiiForShuffledPoints)
 {
   const pcl::PointCloud<pcl::PointXYZ> cloud =
     visfeat_test::syntheticShapeCloud("cube", 52, 24);
-  std::vector<std::size_t> perm(cloud.size());
-  std::iota(perm.begin(), perm.end(), 0);
-  std::mt19937_64 rng(3);
-  visfeat::synthetic::shuffle(perm, rng);
-  pcl::PointCloud<pcl::PointXYZ> shuffled;
-  for (std::size_t i : perm)
-    shuffled.push_back(cloud.points[i]);
+  const auto [shuffled, perm] = visfeat_test::shuffledCloud(cloud, 3);
   const VoxelBand a = visfeat_test::bandFromCloud(cloud, 24);
   const VoxelBand b = visfeat_test::bandFromCloud(shuffled, 24);
   ASSERT_EQ(a.coords(), b.coords());

@@ -3,6 +3,7 @@
 // threads, the repair makes sparse bands face-connected, bad input throws.
 
 #include "band_fixtures.h"
+#include "shuffled_cloud.h"
 #include "voxel_band_checks.h"
 #include <support/cad_catalogue.h>
 #include <support/cad_sampling.h>
@@ -18,8 +19,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numeric>
-#include <random>
 
 namespace {
 
@@ -115,14 +114,7 @@ TEST(BandFromCloud, PointCellsFollowTheFloorFormula)
 TEST(BandFromCloud, ShuffledPointsGiveTheSameBand)
 {
   pcl::PointCloud<pcl::PointXYZ> cloud = cloudWithNaNs(43);
-  std::vector<std::size_t> perm(cloud.size());
-  std::iota(perm.begin(), perm.end(), 0);
-  std::mt19937_64 rng(17);
-  visfeat::synthetic::shuffle(perm, rng);
-  pcl::PointCloud<pcl::PointXYZ> shuffled;
-  for (std::size_t i : perm)
-    shuffled.push_back(cloud.points[i]);
-  shuffled.is_dense = false;
+  const auto [shuffled, perm] = visfeat_test::shuffledCloud(cloud, 17);
 
   const GridSpec g1 = visfeat::gridForCloud(cloud, 20),
                  g2 = visfeat::gridForCloud(shuffled, 20);

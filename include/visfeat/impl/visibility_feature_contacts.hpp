@@ -164,18 +164,16 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::joinSplitCorners(
   // short of it) is one corner split in two (splitCornerMerge). After the corners
   // claimed their points: the one nearer the true corner keeps its point in the
   // joined region.
-  const std::vector<double> angle_of = detail::creaseAnglesOf(results.graph);
-  detail::restoreCreaseAngles(
-    results.graph, angle_of,
-    applyRegionMerge(results, run, output, splitCornerMerge(results.graph)));
+  const auto mergeKeepingAngles = [&](const std::vector<std::uint32_t>& into) {
+    const std::vector<double> angle_of = detail::creaseAnglesOf(results.graph);
+    detail::restoreCreaseAngles(results.graph, angle_of,
+                                applyRegionMerge(results, run, output, into));
+  };
+  mergeKeepingAngles(splitCornerMerge(results.graph));
   // Then a few cells of ridge at a corner, too few points to measure a turn, dead
   // ending there (cornerSpurMerge), join the corner.
-  const std::vector<double> spur_angle_of = detail::creaseAnglesOf(results.graph);
-  detail::restoreCreaseAngles(
-    results.graph, spur_angle_of,
-    applyRegionMerge(
-      results, run, output,
-      cornerSpurMerge(results.graph, CreaseAngleParameters::kMinSidePoints)));
+  mergeKeepingAngles(
+    cornerSpurMerge(results.graph, CreaseAngleParameters::kMinSidePoints));
 }
 
 template <typename PointInT, typename PointOutT>

@@ -1,3 +1,4 @@
+#include <visfeat/core/band/band_dilation.h>
 #include <visfeat/core/common/error.h>
 #include <visfeat/core/graph/edge_bridges.h>
 
@@ -43,19 +44,8 @@ std::vector<char>
 withinSteps(const VoxelBand& band, const std::vector<CellId>& cells, int steps)
 {
   std::vector<char> near(band.size(), 0);
-  std::vector<CellId> ring(cells.begin(), cells.end()), next;
-  for (const CellId c : cells)
-    near[static_cast<std::size_t>(c)] = 1;
-  for (int k = 0; k < steps; ++k) {
-    next.clear();
-    for (const CellId c : ring)
-      for (const CellId n : band.neighbours(c))
-        if (n != kNoCell && !near[static_cast<std::size_t>(n)]) {
-          near[static_cast<std::size_t>(n)] = 1;
-          next.push_back(n);
-        }
-    ring.swap(next);
-  }
+  BandDilation(band).run(cells, static_cast<std::uint32_t>(steps),
+                         [&](CellId c) { near[static_cast<std::size_t>(c)] = 1; });
   return near;
 }
 
@@ -77,6 +67,14 @@ shortestPath(const VoxelBand& band,
   std::vector<char> seen(band.size(), 0);
   for (const CellId c : from)
     seen[static_cast<std::size_t>(c)] = 1;
+  // the face cells from visited[at] back to (not including) a cell of `from`
+  const auto pathTo = [&](std::size_t at) {
+    std::vector<CellId> path;
+    for (; parent[at] >= 0; at = static_cast<std::size_t>(parent[at]))
+      path.push_back(visited[at]);
+    std::reverse(path.begin(), path.end());
+    return path;
+  };
   std::size_t begin = 0;
   for (int step = 0; step < max_steps && begin < visited.size(); ++step) {
     const std::size_t end = visited.size();
@@ -85,29 +83,16 @@ shortestPath(const VoxelBand& band,
         if (n == kNoCell || seen[static_cast<std::size_t>(n)])
           continue;
         const std::uint32_t label = labels[static_cast<std::size_t>(n)];
-        if (label == target) {
-          std::vector<CellId> path;
-          for (int at = static_cast<int>(i); parent[static_cast<std::size_t>(at)] >= 0;
-               at = parent[static_cast<std::size_t>(at)])
-            path.push_back(visited[static_cast<std::size_t>(at)]);
-          std::reverse(path.begin(), path.end());
-          return path;
-        }
+        if (label == target)
+          return pathTo(i);
         if (label == 0 || label > graph.size() ||
             graph.node(label).feature_class != FeatureClass::kFace)
           continue;
         seen[static_cast<std::size_t>(n)] = 1;
         visited.push_back(n);
         parent.push_back(static_cast<int>(i));
-        if (ends_near[static_cast<std::size_t>(n)]) {
-          std::vector<CellId> path;
-          for (int at = static_cast<int>(visited.size()) - 1;
-               parent[static_cast<std::size_t>(at)] >= 0;
-               at = parent[static_cast<std::size_t>(at)])
-            path.push_back(visited[static_cast<std::size_t>(at)]);
-          std::reverse(path.begin(), path.end());
-          return path;
-        }
+        if (ends_near[static_cast<std::size_t>(n)])
+          return pathTo(visited.size() - 1);
       }
     begin = end;
   }

@@ -99,29 +99,16 @@ ThinningState::farthestFrom(CellId from, const std::vector<CellId>& cells) const
   return best;
 }
 
-CellId
-ThinningState::nearestCell(const Eigen::Vector3d& x) const
-{
-  const CellCoord at = x.array().round().cast<int>().matrix();
-  CellId best = kNoCell;
-  double best_distance = std::numeric_limits<double>::infinity();
-  for (int dz = -1; dz <= 1; ++dz)
-    for (int dy = -1; dy <= 1; ++dy)
-      for (int dx = -1; dx <= 1; ++dx) {
-        const CellId c = band.find(at + CellCoord(dx, dy, dz));
-        if (c == kNoCell)
-          continue;
-        const double d = (band.coord(c).cast<double>() - x).norm();
-        if (d < best_distance) {
-          best_distance = d;
-          best = c;
-        }
-      }
-  return best;
-}
+namespace {
 
+/** The band cell among those within `radius` (Chebyshev) of round(x) nearest to x and
+ * no farther than max_distance, the first in z, y, x order among equals; kNoCell if
+ * none. */
 CellId
-ThinningState::nearestCellWithin(const Eigen::Vector3d& x, int radius) const
+nearestInCube(const VoxelBand& band,
+              const Eigen::Vector3d& x,
+              int radius,
+              double max_distance)
 {
   const CellCoord at = x.array().round().cast<int>().matrix();
   CellId best = kNoCell;
@@ -133,12 +120,26 @@ ThinningState::nearestCellWithin(const Eigen::Vector3d& x, int radius) const
         if (c == kNoCell)
           continue;
         const double d = (band.coord(c).cast<double>() - x).norm();
-        if (d < best_distance && d <= radius) {
+        if (d < best_distance && d <= max_distance) {
           best_distance = d;
           best = c;
         }
       }
   return best;
+}
+
+} // namespace
+
+CellId
+ThinningState::nearestCell(const Eigen::Vector3d& x) const
+{
+  return nearestInCube(band, x, 1, std::numeric_limits<double>::infinity());
+}
+
+CellId
+ThinningState::nearestCellWithin(const Eigen::Vector3d& x, int radius) const
+{
+  return nearestInCube(band, x, radius, static_cast<double>(radius));
 }
 
 } // namespace segmentation
