@@ -39,31 +39,36 @@ struct LabelledCloud
 };
 
 /** Two half-planes meeting along the rotated x axis with the given turn (0 = flat),
- * sampled at random over 40 x 12 cells each side: points within 1 cell of the crease
- * are the edge (label 2), the others face 1 or face 3; optional Gaussian noise. */
+ * sampled at random (`count` points) over along x across cells each side (default 40
+ * x 12): points within edge_cells (default 1) of the crease are the edge (label 2),
+ * the others face 1 or face 3; optional Gaussian noise. */
 LabelledCloud
 twoPlanes(double turn_degrees,
           const Eigen::Matrix3d& rotation,
           double noise_cells,
-          std::uint64_t seed)
+          std::uint64_t seed,
+          double along_cells = 40.0,
+          double across_cells = 12.0,
+          int count = 20000,
+          double edge_cells = 1.0)
 {
   std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> along(0.0, 40.0 * kCell);
-  std::uniform_real_distribution<double> across(0.0, 12.0 * kCell);
+  std::uniform_real_distribution<double> along(0.0, along_cells * kCell);
+  std::uniform_real_distribution<double> across(0.0, across_cells * kCell);
   std::normal_distribution<double> noise(0.0, noise_cells * kCell);
   const double turn = turn_degrees * kPi / 180.0;
   // side A goes along -y; side B leaves the crease turned by `turn` from +y
   const Eigen::Vector3d dir_a(0.0, -1.0, 0.0);
   const Eigen::Vector3d dir_b(0.0, std::cos(turn), std::sin(turn));
   LabelledCloud cloud;
-  for (int i = 0; i < 20000; ++i) {
+  for (int i = 0; i < count; ++i) {
     const bool side_b = i % 2 == 1;
     const double s = across(rng);
     Eigen::Vector3d p =
       Eigen::Vector3d(along(rng), 0.0, 0.0) + s * (side_b ? dir_b : dir_a);
     p += Eigen::Vector3d(noise(rng), noise(rng), noise(rng));
     cloud.points.push_back(rotation * p);
-    cloud.labels.push_back(s < kCell ? 2u : (side_b ? 3u : 1u));
+    cloud.labels.push_back(s < edge_cells * kCell ? 2u : (side_b ? 3u : 1u));
   }
   return cloud;
 }
@@ -200,6 +205,63 @@ TEST(CreaseAngles, FilletsReadByTheirRadius)
   EXPECT_GT(tight, visfeat::CreaseAngleParameters::kDefaultMinCreaseAngle);
   EXPECT_NEAR(sharp, 90.0, 1.0);
   EXPECT_GT(tight, wide);
+}
+
+/** Half a cylinder (radius and length in cells, axis along the rotated x) sampled at
+ * random, one point a cell squared, cut across by an edge region along its middle
+ * line: points within edge_cells of arc from it are the edge (label 2), the others
+ * face 1 or face 3, as where a sparse cloud's watershed cut a hole's wall. */
+LabelledCloud
+cutCylinder(double radius_cells,
+            double length_cells,
+            double edge_cells,
+            const Eigen::Matrix3d& rotation,
+            std::uint64_t seed)
+{
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const double r = radius_cells * kCell;
+  const int count = static_cast<int>(kPi * radius_cells * length_cells);
+  LabelledCloud cloud;
+  for (int i = 0; i < count; ++i) {
+    const double angle = (unit(rng) - 0.5) * kPi; // -90..90 degrees
+    const Eigen::Vector3d p(unit(rng) * length_cells * kCell, r * std::sin(angle),
+                            r - r * std::cos(angle));
+    cloud.points.push_back(rotation * p);
+    const double arc = angle * r;
+    cloud.labels.push_back(std::abs(arc) < edge_cells * kCell ? 2u
+                                                              : (arc < 0 ? 1u : 3u));
+  }
+  return cloud;
+}
+
+// The turn that a crease concentrates, not one the surface repeats beside it: the box
+// with hole at 10,000 points (4 cells a point spacing, so a window of 16 cells) had
+// its hole's wall (radius 42 cells) cut by the watershed into pieces whose edges read
+// 20-23 degrees, over the minimum; beside them the wall turns as much. A crease of 25
+// degrees between flat faces, measured the same way, keeps its turn.
+TEST(CreaseAngles, ACylinderCutAcrossIsABlend)
+{
+  constexpr double kWindow = 16.0, kEdgeCells = 4.0;
+  const double min_angle = visfeat::CreaseAngleParameters::kDefaultMinCreaseAngle;
+  for (std::uint64_t r = 1; r <= 3; ++r) {
+    const Eigen::Matrix3d rotation = syn::randomRotation(60 + r);
+    const LabelledCloud wall = cutCylinder(42.0, 120.0, kEdgeCells, rotation, r);
+    const double blend =
+      visfeat::measureCreaseAngles(wall.points, wall.labels, kFaceEdgeFace, kCell,
+                                   kWindow, min_angle)[1]
+        .degrees;
+    EXPECT_LT(blend, 0.5 * min_angle) << "rotation " << r;
+    const LabelledCloud crease =
+      twoPlanes(25.0, rotation, 0.0, r, 120.0, 48.0, 12000, kEdgeCells);
+    const double sharp =
+      visfeat::measureCreaseAngles(crease.points, crease.labels, kFaceEdgeFace, kCell,
+                                   kWindow, min_angle)[1]
+        .degrees;
+    EXPECT_NEAR(sharp, 25.0, 1.0) << "rotation " << r;
+    std::cout << "rotation " << r << ": wall " << blend << " degrees, crease " << sharp
+              << std::endl;
+  }
 }
 
 // --- The merge rule on a sheet of cells ----------------------------------------------
@@ -361,6 +423,57 @@ TEST(CreaseAngles, AVertexTheCreasesPassByJoinsTheirFace)
   contact.degrees = 10.0;
   EXPECT_EQ(visfeat::shallowCreaseMerge(graph, angles, {contact}, 20.0),
             Into({0, 1, 2, 3, 3, 2, 3, 7, 7, 9}));
+}
+
+/** A 40 x 20 sheet of cells: F1 x < 18, F3 x >= 22, between them (x 18-21) E2 for
+ * y < 8, V4 for y 12-15 (touching F1 and F3, no edge: a speck on a cylinder's wall cut
+ * by the watershed), F1 elsewhere; V5 (x 5-6, y 15-16) lies inside F1 (a cone's apex
+ * touches one face). */
+visfeat::TopologyGraph
+speckSheetGraph()
+{
+  const visfeat::VoxelBand band = sheetBand(40, 20);
+  std::vector<std::uint32_t> labels(band.size());
+  for (std::size_t i = 0; i < band.size(); ++i) {
+    const visfeat::CellCoord& c = band.coord(static_cast<visfeat::CellId>(i));
+    const int x = c.x(), y = c.y();
+    if (x >= 5 && x <= 6 && y >= 15 && y <= 16)
+      labels[i] = 5;
+    else if (x < 18)
+      labels[i] = 1;
+    else if (x >= 22)
+      labels[i] = 3;
+    else if (y < 8)
+      labels[i] = 2;
+    else if (y >= 12 && y <= 15)
+      labels[i] = 4;
+    else
+      labels[i] = 1;
+  }
+  const std::vector<FeatureClass> classes = {FeatureClass::kFace, FeatureClass::kEdge,
+                                             FeatureClass::kFace, FeatureClass::kVertex,
+                                             FeatureClass::kVertex};
+  return visfeat::TopologyGraph::build(band, labels, classes, {});
+}
+
+TEST(CreaseAngles, AVertexWithoutEdgesBetweenMergedFacesJoinsThem)
+{
+  const visfeat::TopologyGraph graph = speckSheetGraph();
+  ASSERT_TRUE(graph.neighbours(4, FeatureClass::kEdge).empty());
+  ASSERT_EQ(graph.neighbours(4, FeatureClass::kFace),
+            std::vector<std::uint32_t>({1, 3}));
+  ASSERT_EQ(graph.neighbours(5, FeatureClass::kFace), std::vector<std::uint32_t>({1}));
+  std::vector<CreaseAngle> angles(5);
+  angles[1].faces = {{1, 3}};
+  using Into = std::vector<std::uint32_t>;
+  // E2 a crease: nothing merges, both vertices stay.
+  angles[1].degrees = 60.0;
+  EXPECT_EQ(visfeat::shallowCreaseMerge(graph, angles, {}, 20.0),
+            Into({0, 1, 2, 3, 4, 5}));
+  // E2 shallow: F1 and F3 become one, E2 and V4 join it; V5, on one face, stays.
+  angles[1].degrees = 10.0;
+  EXPECT_EQ(visfeat::shallowCreaseMerge(graph, angles, {}, 20.0),
+            Into({0, 1, 1, 1, 1, 5}));
 }
 
 TEST(CreaseAngles, WrittenInTheGraphJsonForEdges)

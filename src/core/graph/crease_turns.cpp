@@ -24,12 +24,135 @@ constexpr double kScanMinWindowShare = 0.75;
  * window's points: a sliver's plane is noise. */
 constexpr double kScanMinSideShare = 0.3;
 
+/** A window of the walk across (or beside) a crease: the pair's points within radius
+ * of `position`. */
+struct Window
+{
+  std::vector<Eigen::Vector3d> local; // relative to the position before the move
+  PlaneSums all;
+};
+
+/** The turn at `position` across `direction` over the pair's points within radius:
+ * the position moves onto the plane of those points and the direction turns into it;
+ * the points before and after the plane through it across the direction are the two
+ * halves (turnOfHalves(), the line being normal x direction), their sums relative to
+ * the moved position returned in before and after. Returns false (the walk ends)
+ * where the window holds fewer than 2 kMinSidePoints or kScanMinWindowShare of
+ * first_count points (the faces' border: another face, a hole, the cloud's end) or
+ * the direction vanishes; `turn` is NaN where a half is a sliver (fewer than
+ * kMinSidePoints or kScanMinSideShare of the window). Only the points on the side
+ * of half_normal of the plane through half_origin count (a zero normal: all). */
+bool
+turnInWindow(const FacePointIndex& index,
+             const std::vector<Eigen::Vector3d>& points,
+             const std::vector<std::uint32_t>& labels,
+             Eigen::Vector3d& position,
+             Eigen::Vector3d& direction,
+             double radius,
+             const std::array<std::uint32_t, 2>& pair,
+             std::size_t first_count,
+             const Eigen::Vector3d& half_origin,
+             const Eigen::Vector3d& half_normal,
+             Window& window,
+             PlaneSums& before,
+             PlaneSums& after,
+             double& turn)
+{
+  turn = std::numeric_limits<double>::quiet_NaN();
+  window.local.clear();
+  window.all = PlaneSums();
+  index.forEachWithin(position, radius, [&](std::uint32_t i) {
+    if ((labels[i] != pair[0] && labels[i] != pair[1]) ||
+        (points[i] - half_origin).dot(half_normal) < 0.0)
+      return;
+    window.local.push_back(points[i] - position);
+    window.all.add(window.local.back());
+  });
+  const PlaneSums& all = window.all;
+  if (all.count < 2 * CreaseAngleParameters::kMinSidePoints ||
+      double(all.count) < kScanMinWindowShare * double(first_count))
+    return false;
+  const Eigen::Vector3d n = all.normal();
+  const Eigen::Vector3d offset = all.mean().dot(n) * n; // onto the local plane
+  position += offset;
+  direction -= direction.dot(n) * n;
+  if (!(direction.norm() > 0.0))
+    return false;
+  direction.normalize();
+  before = PlaneSums();
+  after = PlaneSums();
+  splitAcross(window.local, offset, direction, before, after);
+  if (before.count < CreaseAngleParameters::kMinSidePoints ||
+      after.count < CreaseAngleParameters::kMinSidePoints ||
+      double(std::min(before.count, after.count)) <
+        kScanMinSideShare * double(all.count))
+    return true;
+  turn = turnOfHalves(before, after, n.cross(direction).normalized());
+  return true;
+}
+
+/** The part of `turn`, measured at `origin` on a crease between sides a and b (sums
+ * relative to origin), that the surface does not repeat one window into each side:
+ * turn minus the smaller of the turns there, at least 0. The turn into a side is
+ * turnInWindow() at the window one radius from origin along sideDirection(), over the
+ * pair's points; a side where it cannot be measured (the face ends: a corner, a hole)
+ * repeats nothing. A crease between flat faces keeps its turn (less the noise of a flat
+ * window's halves); a cylinder or a fillet wider than the window turns alike beside
+ * the sample and reads about 0 (the box with hole at 10,000 points, 4 cells a spacing,
+ * its window 16 cells: the hole's wall, radius 42 cells, read 20-23 degrees at the
+ * watershed's cuts across it and 15-21 a window beside them; its 90-degree rims 90 and
+ * 0-5). */
+double
+concentratedTurn(double turn,
+                 const FacePointIndex& index,
+                 const std::vector<Eigen::Vector3d>& points,
+                 const std::vector<std::uint32_t>& labels,
+                 const Eigen::Vector3d& origin,
+                 const PlaneSums& a,
+                 const PlaneSums& b,
+                 double radius,
+                 const std::array<std::uint32_t, 2>& pair,
+                 std::size_t first_count)
+{
+  if (!std::isfinite(turn))
+    return turn;
+  Eigen::Vector3d foot_a, away_a, foot_b, away_b;
+  if (!sideDirection(a, b, foot_a, away_a) || !sideDirection(b, a, foot_b, away_b))
+    return turn;
+  // Each side's window keeps the points nearer its side than the other's (beyond the
+  // plane bisecting the two directions): where the faces fold back (a turn above 90
+  // degrees) the other face passes within a window of it.
+  const Eigen::Vector3d bisector_normal = away_a - away_b;
+  const double separation = (a.mean() - b.mean()).norm();
+  double repeated = std::numeric_limits<double>::infinity();
+  Window window;
+  PlaneSums before, after;
+  for (const bool side_a : {true, false}) {
+    Eigen::Vector3d away = side_a ? away_a : away_b;
+    Eigen::Vector3d position = origin + (side_a ? foot_a : foot_b) + radius * away;
+    double beside = 0.0;
+    if (turnInWindow(index, points, labels, position, away, radius, pair, first_count,
+                     origin,
+                     side_a ? bisector_normal : Eigen::Vector3d(-bisector_normal),
+                     window, before, after, beside) &&
+        std::isfinite(beside))
+      // as much as the surface turns there between points as far apart as the
+      // sides at origin (a bend's turn grows with the distance between the centroids
+      // of the planes compared, and the sides at origin lie beyond the edge region's
+      // points, a window beside they do not)
+      repeated =
+        std::min(repeated, beside * separation / (before.mean() - after.mean()).norm());
+    if (repeated <= 0.0)
+      break;
+  }
+  return std::isfinite(repeated) ? std::max(0.0, turn - repeated) : turn;
+}
+
 /** Walking from `at` along `direction` over the two faces' points (steps of half the
- * window, kContactScanWindows windows far, each position moved onto the plane of the
- * points around it and the direction turned into that plane), the largest turn
- * between the points before and after a position (sideTurnDegrees() of the window);
- * 0 when no position holds kMinSidePoints a side. first_count: the two faces' points
- * within the window at `at` (the caller's own query there). */
+ * window, kContactScanWindows windows far, turnInWindow() at each position), the
+ * largest concentratedTurn() between the points before and after a position; 0 when
+ * no position holds kMinSidePoints a side. first_count: the two faces' points within
+ * the window at `at` (the caller's own query there). */
 double
 sharpestTurnAlong(const FacePointIndex& index,
                   const std::vector<Eigen::Vector3d>& points,
@@ -43,40 +166,20 @@ sharpestTurnAlong(const FacePointIndex& index,
   double sharpest = 0.0;
   Eigen::Vector3d position = at;
   const int steps = static_cast<int>(2.0 * CreaseAngleParameters::kContactScanWindows);
-  std::vector<Eigen::Vector3d> local;
-  // a window that holds much fewer points than the first reaches the faces' border
-  // (another face, a hole, the cloud's end), where a side is a sliver whose plane is
-  // noise: the walk ends there
+  Window window;
+  PlaneSums before, after;
   for (int k = 1; k <= steps; ++k) {
     position += 0.5 * radius * direction;
-    local.clear();
-    PlaneSums all;
-    index.forEachWithin(position, radius, [&](std::uint32_t i) {
-      if (labels[i] != pair[0] && labels[i] != pair[1])
-        return;
-      local.push_back(points[i] - position);
-      all.add(local.back());
-    });
-    if (all.count < 2 * CreaseAngleParameters::kMinSidePoints ||
-        double(all.count) < kScanMinWindowShare * double(first_count))
+    double turn = 0.0;
+    if (!turnInWindow(index, points, labels, position, direction, radius, pair,
+                      first_count, position, Eigen::Vector3d::Zero(), window, before,
+                      after, turn))
       break;
-    const Eigen::Vector3d n = all.normal();
-    const Eigen::Vector3d offset = all.mean().dot(n) * n; // onto the local plane
-    position += offset;
-    direction -= direction.dot(n) * n;
-    if (!(direction.norm() > 0.0))
-      break;
-    direction.normalize();
-    PlaneSums before, after;
-    splitAcross(local, offset, direction, before, after);
-    if (before.count < CreaseAngleParameters::kMinSidePoints ||
-        after.count < CreaseAngleParameters::kMinSidePoints ||
-        double(std::min(before.count, after.count)) <
-          kScanMinSideShare * double(all.count))
+    if (!std::isfinite(turn) || turn <= sharpest) // the discount only lowers it
       continue;
-    const double turn = turnOfSides(before, after);
-    if (std::isfinite(turn))
-      sharpest = std::max(sharpest, turn);
+    sharpest =
+      std::max(sharpest, concentratedTurn(turn, index, points, labels, position, before,
+                                          after, radius, pair, first_count));
   }
   return sharpest;
 }
@@ -112,7 +215,10 @@ measureSample(const FacePointIndex& index,
   if (n_second < CreaseAngleParameters::kMinSidePoints)
     return turn;
   turn.faces = {{std::min(first, second), std::max(first, second)}};
-  turn.degrees = turnOfSides(sides[first], sides[second]);
+  const std::array<std::uint32_t, 2> pair{{first, second}};
+  turn.degrees =
+    concentratedTurn(turnOfSides(sides[first], sides[second]), index, points, labels,
+                     at, sides[first], sides[second], radius, pair, n_first + n_second);
   if (!std::isfinite(turn.degrees) || turn.degrees >= walk_below_degrees)
     return turn;
   // the sharpest turn across: an edge region on a chamfer narrower than the
@@ -122,9 +228,9 @@ measureSample(const FacePointIndex& index,
   if (across.isZero())
     return turn;
   for (const double way : {1.0, -1.0})
-    turn.degrees = std::max(
-      turn.degrees, sharpestTurnAlong(index, points, labels, at, way * across, radius,
-                                      {{first, second}}, n_first + n_second));
+    turn.degrees =
+      std::max(turn.degrees, sharpestTurnAlong(index, points, labels, at, way * across,
+                                               radius, pair, n_first + n_second));
   return turn;
 }
 
@@ -160,7 +266,9 @@ contactTurn(const FacePointIndex& index,
   if (side_a.count < CreaseAngleParameters::kMinSidePoints ||
       side_b.count < CreaseAngleParameters::kMinSidePoints)
     return nan;
-  const double here = turnOfSides(side_a, side_b);
+  const double here =
+    concentratedTurn(turnOfSides(side_a, side_b), index, points, labels, at, side_a,
+                     side_b, radius, pair, local.size());
   if (!std::isfinite(here))
     return nan;
   // The sharpest turn across the blend: a chamfer narrower than the separation is

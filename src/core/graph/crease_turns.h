@@ -23,9 +23,10 @@ struct SampleTurn
 };
 
 /** The turn at `at` between the two faces with most points within radius (world
- * units; each side needs CreaseAngleParameters::kMinSidePoints); where it is below
- * walk_below_degrees, the sharpest turn met walking kContactScanWindows windows to
- * both sides across (measureCreaseAngles()). */
+ * units; each side needs CreaseAngleParameters::kMinSidePoints), less the turn the
+ * surface repeats a window beside it; where that is below walk_below_degrees, the
+ * sharpest turn so measured walking kContactScanWindows windows to both sides across
+ * (measureCreaseAngles()). */
 SampleTurn measureSample(const FacePointIndex& index,
                          const std::vector<Eigen::Vector3d>& points,
                          const std::vector<std::uint32_t>& labels,

@@ -20,10 +20,14 @@ namespace visfeat {
  * The rule: a turn of less than min_crease_angle degrees between the planes fitted to
  * the two sides of an edge, within window_cells cells of it, is a blend or a shallow
  * facet, not a crease. The edge's points and cells join its sides, and the two faces
- * become one. A fillet of radius r cells turns by about 2 d / r radians over the
- * window, d (about 2.3 cells for the default window) being the mean distance of the
- * fitted points from the edge's middle: with the defaults a fillet whose radius is
- * above about 13 cells reads below 20 degrees and is a face.
+ * become one. The turn counted is the one the crease concentrates: less what the
+ * surface repeats one window beside it on both sides (a cylinder cut across by the
+ * watershed reads about 0 whatever its radius; a crease between flat faces keeps its
+ * turn). A fillet of radius r cells turns by about 2 d / r radians over the window, d
+ * (about 2.3 cells for the default window) being the mean distance of the fitted
+ * points from the edge's middle, of which a window beside it repeats the part on the
+ * fillet: with the defaults a fillet whose radius is above about 13 cells reads below
+ * 20 degrees (19 cells: about 9) and is a face, one of 6 cells reads about 30.
  */
 struct CreaseAngleParameters
 {
@@ -114,11 +118,14 @@ double sideTurnDegrees(const std::vector<Eigen::Vector3d>& side_a,
  *
  * Each edge's samples (up to kMaxSamplesPerEdge of its points) take the face points
  * within the window; the two faces with most points there are the sample's sides
- * (each needs kMinSidePoints), measured by sideTurnDegrees(); where that turn is
- * below walk_below_degrees (degrees; default: always) the sample's turn is the
- * sharpest met walking kContactScanWindows windows to both sides across (a chamfer
- * narrower than the separation reads shallow at its middle). The estimator passes its
- * minimum crease angle: the walk only raises a turn, so it matters only below it.
+ * (each needs kMinSidePoints), measured by sideTurnDegrees() less the turn the
+ * surface repeats one window into each side (the smaller of the two, scaled by the
+ * distance between the compared centroids; none where a side's window leaves the two
+ * faces); where that turn is below walk_below_degrees (degrees; default: always) the
+ * sample's turn is the sharpest so measured walking kContactScanWindows windows to
+ * both sides across (a chamfer narrower than the separation reads shallow at its
+ * middle). The estimator passes its minimum crease angle: the walk only raises a turn,
+ * so it matters only below it.
  * Edges are measured on up to `threads` threads (0 = all available); the result is
  * the same for any count. */
 std::vector<CreaseAngle> measureCreaseAngles(const std::vector<Eigen::Vector3d>& points,
@@ -138,10 +145,11 @@ std::vector<CreaseAngle> measureCreaseAngles(const std::vector<Eigen::Vector3d>&
  * vertex point (their centres) measure the turn between the planes fitted to
  * the two faces' points within the window (sideTurnDegrees(), kMinSidePoints a side),
  * and the sharpest turn met walking kContactScanWindows windows to both sides across
- * the contact; a sample's turn is the larger; the contact's the median over at least
- * kMinContactSamples samples, else the pair is left out.
- * cell_labels: per band cell its region label; points, labels, classes,
- * window_cells and threads as measureCreaseAngles(). Pairs in increasing order. */
+ * the contact, each less the turn the surface repeats beside it (as
+ * measureCreaseAngles()); a sample's turn is the larger; the contact's the median over
+ * at least kMinContactSamples samples, else the pair is left out. cell_labels: per band
+ * cell its region label; points, labels, classes, window_cells and threads as
+ * measureCreaseAngles(). Pairs in increasing order. */
 std::vector<CreaseAngle>
 measureFaceContacts(const VoxelBand& band,
                     const std::vector<std::uint32_t>& cell_labels,
