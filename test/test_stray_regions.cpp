@@ -1,8 +1,10 @@
 // strayRegionMerge: vertex regions along an edge instead of at its ends join their
 // edge or the face of their edges, a corner split in two is joined, face specks at a
-// corner join the corner; ends of edges, T-junctions, corners (of a short crease, of a
-// lens) and faces bounded by edges stay; cornerSpurMerge: an edge of too few points for
-// a turn, dead ending at a corner, joins it.
+// corner join the corner, pieces of a broken rim are one edge; ends of edges,
+// T-junctions, corners (of a short crease, of a lens) and faces bounded by edges stay;
+// cornerSpurMerge: an edge of too few points for a turn, dead ending at a corner,
+// joins it; deadEndCornerMerge: a corner of one edge beside its faces' corner joins
+// the edge.
 
 #include <visfeat/core/band/voxel_band.h>
 #include <visfeat/core/common/feature_class.h>
@@ -192,6 +194,38 @@ TEST(StrayRegions, APieceOfALoopJoinsTheLoop)
   Labels expected = identity(4);
   expected[4] = 3;
   EXPECT_EQ(sheet.strayMerge(), expected);
+}
+
+/** A square rim (r 8-10 around the sheet's middle) between the outer face F1 and the
+ * inner face F2 (F5 for x >= 20 when `split_inside`), broken where the band lost its
+ * core: E3 for x <= 15, E4 for x >= 24, F1 between; no corners. */
+std::uint32_t
+brokenRim(int x, int y, bool split_inside)
+{
+  const double r = std::max(std::abs(x - 19.5), std::abs(y - 19.5));
+  if (r < 8.0)
+    return split_inside && x >= 20 ? 5 : 2;
+  if (r > 10.0)
+    return 1;
+  return x <= 15 ? 3 : x >= 24 ? 4 : 1;
+}
+
+TEST(StrayRegions, PiecesOfABrokenRimAreOneEdge)
+{
+  const Sheet sheet({kF, kF, kE, kE},
+                    [](int x, int y) { return brokenRim(x, y, false); });
+  ASSERT_TRUE(sheet.graph.verticesOfEdge(3).empty());
+  ASSERT_EQ(sheet.graph.facesOfEdge(3), Labels({1, 2}));
+  ASSERT_EQ(sheet.graph.facesOfEdge(4), Labels({1, 2}));
+  Labels expected = identity(4);
+  expected[4] = 3;
+  EXPECT_EQ(sheet.strayMerge(), expected);
+  // Rims between different faces stay apart.
+  const Sheet split({kF, kF, kE, kE, kF},
+                    [](int x, int y) { return brokenRim(x, y, true); });
+  ASSERT_EQ(split.graph.facesOfEdge(3), Labels({1, 2}));
+  ASSERT_EQ(split.graph.facesOfEdge(4), Labels({1, 5}));
+  EXPECT_EQ(split.strayMerge(), identity(5));
 }
 
 /** A crease that ends in the middle of the sheet (where its faces F1 | F2 meet
@@ -413,6 +447,55 @@ TEST(StrayRegions, AnEdgeOfTooFewPointsForATurnDeadEndingAtACornerJoinsIt)
   const Sheet both(classes, layout(true));
   ASSERT_EQ(both.graph.verticesOfEdge(3), (std::vector<std::uint32_t>{4, 5}));
   EXPECT_EQ(visfeat::cornerSpurMerge(both.graph, 10), identity(5));
+}
+
+/** A crease E3 (y 19-20, x 12-27) between F1 (below) and F2 (above) from the corner
+ * V4 (x 8-11, y 17-22, where E11 below parts F1 from F12 and E13 above F2 from F14)
+ * to V5 (x 28-30), which touches nothing else: the crease stopped short and its end
+ * was drawn as a corner. With `corner`, the corner the crease runs to, V6 (x 35-39,
+ * y 17-22), where E7 (x 37-38, above) parts F2 from F8 and E9 (below) F1 from F10;
+ * without, those cells are F1 and F2. */
+std::uint32_t
+deadEnd(int x, int y, bool corner)
+{
+  if (in(x, 8, 11) && in(y, 17, 22))
+    return 4;
+  if (in(x, 9, 10))
+    return y < 17 ? 11 : 13;
+  if (x < 9)
+    return y < 20 ? 12 : 14;
+  if (in(x, 28, 30) && in(y, 19, 20))
+    return 5;
+  if (in(x, 12, 27) && in(y, 19, 20))
+    return 3;
+  if (corner) {
+    if (in(x, 35, 39) && in(y, 17, 22))
+      return 6;
+    if (in(x, 37, 38))
+      return y > 22 ? 7 : 9;
+    if (x > 38)
+      return y > 22 ? 8 : 10;
+  }
+  return y < 20 ? 1 : 2;
+}
+
+TEST(StrayRegions, ACornerAtTheEndOfOneEdgeBesideItsFacesCornerJoinsTheEdge)
+{
+  const std::vector<FeatureClass> classes{kF, kF, kE, kV, kV, kV, kE,
+                                          kF, kE, kF, kE, kF, kE, kF};
+  const Sheet sheet(classes, [](int x, int y) { return deadEnd(x, y, true); });
+  ASSERT_EQ(sheet.graph.verticesOfEdge(3), Labels({4, 5}));
+  ASSERT_EQ(sheet.graph.neighbours(4, kE), Labels({3, 11, 13}));
+  ASSERT_EQ(sheet.graph.neighbours(5, kF), Labels({1, 2}));
+  ASSERT_EQ(sheet.graph.neighbours(6, kE), Labels({7, 9}));
+  ASSERT_EQ(sheet.graph.neighbours(6, kF), Labels({1, 2, 8, 10}));
+  Labels joined = identity(14);
+  joined[5] = 3;
+  EXPECT_EQ(visfeat::deadEndCornerMerge(sheet.graph), joined);
+  // no corner of F1 and F2 beyond it: the end stays
+  const Sheet alone(classes, [](int x, int y) { return deadEnd(x, y, false); });
+  ASSERT_EQ(alone.graph.verticesOfEdge(3), Labels({4, 5}));
+  EXPECT_EQ(visfeat::deadEndCornerMerge(alone.graph), identity(14));
 }
 
 } // namespace

@@ -174,6 +174,9 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::joinSplitCorners(
   // ending there (cornerSpurMerge), join the corner.
   mergeKeepingAngles(
     cornerSpurMerge(results.graph, CreaseAngleParameters::kMinSidePoints));
+  // And a corner at the end of one edge only, beside the corner of the edge's two
+  // faces (deadEndCornerMerge), joins its edge: the bridges take the edge on.
+  mergeKeepingAngles(deadEndCornerMerge(results.graph));
 }
 
 template <typename PointInT, typename PointOutT>

@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <limits>
+#include <map>
 #include <numeric>
 
 namespace visfeat {
@@ -237,8 +239,26 @@ strayRegionMerge(const TopologyGraph& graph)
     if (vertices.size() == 1 && isCornerSpeck(graph, f, vertices[0]))
       into[f] = into[vertices[0]];
   }
+  // Pieces of a broken rim: edges without a corner kept (their vertices, if any,
+  // stray) between the same two faces are one edge (the smallest label).
+  std::map<std::vector<std::uint32_t>, std::uint32_t> rim_of_pair;
+  for (std::uint32_t e = 1; e <= n; ++e) {
+    if (graph.node(e).feature_class != FeatureClass::kEdge)
+      continue;
+    const std::vector<std::uint32_t> vertices =
+      graph.neighbours(e, FeatureClass::kVertex);
+    if (std::any_of(vertices.begin(), vertices.end(),
+                    [&](std::uint32_t v) { return into[v] == v; }))
+      continue;
+    const std::vector<std::uint32_t> faces = graph.facesOfEdge(e);
+    if (faces.size() != 2)
+      continue;
+    const auto [it, first] = rim_of_pair.emplace(faces, e);
+    if (!first)
+      into[e] = it->second;
+  }
   // a stray vertex or speck that joined a corner piece or a piece of crease between
-  // two (corners never join anything: no cycle)
+  // two, or a piece of a broken rim (corners never join anything: no cycle)
   for (std::uint32_t r = 1; r <= n; ++r)
     while (into[into[r]] != into[r])
       into[r] = into[into[r]];
@@ -259,6 +279,45 @@ cornerSpurMerge(const TopologyGraph& graph, std::uint64_t min_points)
     const std::vector<std::uint32_t> vertices = graph.verticesOfEdge(e);
     if (vertices.size() == 1)
       into[e] = vertices[0]; // vertices join nothing here: no chain
+  }
+  return into;
+}
+
+std::vector<std::uint32_t>
+deadEndCornerMerge(const TopologyGraph& graph)
+{
+  const std::size_t n = graph.size();
+  std::vector<std::uint32_t> into(n + 1);
+  std::iota(into.begin(), into.end(), 0u);
+  for (std::uint32_t v = 1; v <= n; ++v) {
+    if (graph.node(v).feature_class != FeatureClass::kVertex)
+      continue;
+    const std::vector<std::uint32_t> edges = graph.neighbours(v, FeatureClass::kEdge);
+    if (edges.size() != 1)
+      continue;
+    const std::uint32_t e = edges[0];
+    const std::vector<std::uint32_t> faces = graph.facesOfEdge(e);
+    const std::vector<std::uint32_t> ends = graph.verticesOfEdge(e);
+    const auto isCorner = [&](std::uint32_t w) {
+      return graph.neighbours(w, FeatureClass::kEdge).size() >= 2;
+    };
+    // the edge's other end a corner: one dead end, not a crease between two such
+    if (faces.size() != 2 || graph.neighbours(v, FeatureClass::kFace) != faces ||
+        std::none_of(ends.begin(), ends.end(), isCorner))
+      continue;
+    // the corner of both faces, not on the edge
+    const std::vector<std::uint32_t> a =
+      graph.neighbours(faces[0], FeatureClass::kVertex);
+    const std::vector<std::uint32_t> b =
+      graph.neighbours(faces[1], FeatureClass::kVertex);
+    std::vector<std::uint32_t> both;
+    std::set_intersection(a.begin(), a.end(), b.begin(), b.end(),
+                          std::back_inserter(both));
+    const bool corner = std::any_of(both.begin(), both.end(), [&](std::uint32_t w) {
+      return std::find(ends.begin(), ends.end(), w) == ends.end() && isCorner(w);
+    });
+    if (corner)
+      into[v] = e; // edges join nothing here: no chain
   }
   return into;
 }
