@@ -356,6 +356,45 @@ TEST(StrayRegions, ACornerSplitInTwoIsOneCorner)
   EXPECT_EQ(visfeat::splitCornerMerge(sheet.graph), expected);
 }
 
+/** The split corner of ACornerSplitInTwoIsOneCorner with a crease E9 (x 6..7, y
+ * 2..14) leaving its piece V5 between F1 (x < 6) and F11 (x >= 6), and further up
+ * the same line a crease E10 (y 24..30) with no corner between the same faces. E9
+ * ends at a corner (the piece is part of V4), so it is no piece of a broken rim and
+ * E10 stays apart. */
+TEST(StrayRegions, ACreaseEndingAtASplitCornerIsNoPieceOfABrokenRim)
+{
+  const std::vector<FeatureClass> classes{kF, kE, kE, kV, kV, kV, kV, kE, kE, kE, kF};
+  const Sheet sheet(
+    classes,
+    [](int x, int y) -> std::uint32_t {
+      if (x <= 2 && y <= 2)
+        return 4;
+      if (y <= 1 && x == 3)
+        return 8;
+      if (y <= 1 && x == 4)
+        return 5;
+      if (y <= 1)
+        return x >= 36 ? 6 : 2;
+      if (x <= 1)
+        return y >= 36 ? 7 : 3;
+      if (in(x, 6, 7) && in(y, 2, 14))
+        return 9;
+      if (in(x, 6, 7) && in(y, 24, 30))
+        return 10;
+      return x < 6 ? 1 : 11;
+    },
+    3);
+  ASSERT_EQ(sheet.graph.verticesOfEdge(8), Labels({4, 5}));
+  ASSERT_EQ(sheet.graph.verticesOfEdge(9), Labels({5}));
+  ASSERT_TRUE(sheet.graph.verticesOfEdge(10).empty());
+  ASSERT_EQ(sheet.graph.facesOfEdge(9), Labels({1, 11}));
+  ASSERT_EQ(sheet.graph.facesOfEdge(10), Labels({1, 11}));
+  Labels expected = identity(11);
+  expected[5] = 4;
+  expected[8] = 4;
+  EXPECT_EQ(sheet.strayMerge(), expected);
+}
+
 /** Corners V4 (x <= 2) and V5 (x 9..11) at the ends of a short crease E8 (y <= 1, x
  * 3..8), each with creases of its own (E3 up from V4 to V7, E9 up from V5 to V10, E2
  * on from V5 to V6): two corners that share one edge (a chamfer's) both stay. */

@@ -240,7 +240,8 @@ strayRegionMerge(const TopologyGraph& graph)
       into[f] = into[vertices[0]];
   }
   // Pieces of a broken rim: edges without a corner kept (their vertices, if any,
-  // stray) between the same two faces are one edge (the smallest label).
+  // stray; a piece of a split corner is that corner) between the same two faces are
+  // one edge (the smallest label).
   std::map<std::vector<std::uint32_t>, std::uint32_t> rim_of_pair;
   for (std::uint32_t e = 1; e <= n; ++e) {
     if (graph.node(e).feature_class != FeatureClass::kEdge)
@@ -248,7 +249,7 @@ strayRegionMerge(const TopologyGraph& graph)
     const std::vector<std::uint32_t> vertices =
       graph.neighbours(e, FeatureClass::kVertex);
     if (std::any_of(vertices.begin(), vertices.end(),
-                    [&](std::uint32_t v) { return into[v] == v; }))
+                    [&](std::uint32_t v) { return into[v] == v || split[v]; }))
       continue;
     const std::vector<std::uint32_t> faces = graph.facesOfEdge(e);
     if (faces.size() != 2)
@@ -302,6 +303,7 @@ deadEndCornerMerge(const TopologyGraph& graph)
       return graph.neighbours(w, FeatureClass::kEdge).size() >= 2;
     };
     // the edge's other end a corner: one dead end, not a crease between two such
+    // (both face lists ascending, as TopologyGraph::neighbours promises)
     if (faces.size() != 2 || graph.neighbours(v, FeatureClass::kFace) != faces ||
         std::none_of(ends.begin(), ends.end(), isCorner))
       continue;

@@ -44,11 +44,11 @@ namespace visfeat {
  * surface): it joins the vertex (or what the vertex joins).
  *
  * **Broken rims.** Edge regions without a corner (no vertex region, or only stray
- * ones) joined to the same two faces are pieces of one closed crease broken where the
- * band lost its core (a hole's rim: the box with hole at 10,000 points, seed 43, a
- * rim of 781 and 176 cells): they join the smallest label. Two faces that meet along
- * two closed curves (surfaces crossing twice, rare in machined parts) would have their
- * two rims made one edge too.
+ * ones; a piece of a split corner counts as its corner) joined to the same two faces
+ * are pieces of one closed crease broken where the band lost its core (a hole's rim:
+ * the box with hole at 10,000 points, seed 43, a rim of 781 and 176 cells): they join
+ * the smallest label. Two faces that meet along two closed curves (surfaces crossing
+ * twice, rare in machined parts) would have their two rims made one edge too.
  *
  * Measured on the generated models at 20,000 points (the band filled between the
  * points at 256 cells), rotations 4000-4020: 14 of 147 runs had such regions (the
