@@ -6,10 +6,10 @@
 // joins it; deadEndCornerMerge: a corner of one edge beside its faces' corner joins
 // the edge.
 
-#include <visfeat/core/band/voxel_band.h>
+#include "graph_sheet.h"
+
 #include <visfeat/core/common/feature_class.h>
 #include <visfeat/core/graph/stray_regions.h>
-#include <visfeat/core/graph/topology_graph.h>
 
 #include <gtest/gtest.h>
 
@@ -20,69 +20,22 @@
 
 namespace {
 
-using visfeat::CellCoord;
-using visfeat::CellId;
 using visfeat::FeatureClass;
-using visfeat::GridSpec;
-using visfeat::TopologyGraph;
-using visfeat::TopologyGraphParameters;
-using visfeat::VoxelBand;
-using Labels = std::vector<std::uint32_t>;
+using Labels = visfeat_test::Labels;
 
 constexpr FeatureClass kV = FeatureClass::kVertex;
 constexpr FeatureClass kE = FeatureClass::kEdge;
 constexpr FeatureClass kF = FeatureClass::kFace;
 
-/** A sheet of cells z = 2, x and y in [0, side), labelled by `label` (x, y), and its
- * graph with the default parameters but the dilation radius. */
-struct Sheet
+/** The labelled sheet of graph_sheet.h, with strayRegionMerge. */
+struct Sheet : visfeat_test::LabelledSheet
 {
-  VoxelBand band;
-  Labels labels;
-  TopologyGraph graph;
-
-  Sheet(const std::vector<FeatureClass>& classes,
-        const std::function<std::uint32_t(int x, int y)>& label,
-        int dilation_radius = TopologyGraphParameters::kDefaultDilationRadius,
-        int side = 40)
-  {
-    GridSpec grid;
-    grid.origin = Eigen::Vector3d(-1.0, 0.5, 2.0);
-    grid.cell_size = 0.25;
-    grid.dims = Eigen::Vector3i(side, side, 6);
-    std::vector<CellCoord> cells;
-    for (int y = 0; y < side; ++y)
-      for (int x = 0; x < side; ++x)
-        cells.emplace_back(x, y, 2);
-    VoxelBand::Options options;
-    options.repair = false;
-    band = VoxelBand::fromCells(grid, cells, options);
-    labels.resize(band.size());
-    for (std::size_t i = 0; i < band.size(); ++i) {
-      const CellCoord& c = band.coord(static_cast<CellId>(i));
-      labels[i] = label(c.x(), c.y());
-    }
-    TopologyGraphParameters parameters;
-    parameters.dilation_radius = dilation_radius;
-    graph = TopologyGraph::build(band, labels, classes, parameters);
-  }
-
+  using LabelledSheet::LabelledSheet;
   Labels strayMerge() const { return visfeat::strayRegionMerge(graph); }
 };
 
-Labels
-identity(std::size_t regions)
-{
-  Labels into(regions + 1);
-  std::iota(into.begin(), into.end(), 0u);
-  return into;
-}
-
-bool
-in(int v, int lo, int hi)
-{
-  return v >= lo && v <= hi;
-}
+using visfeat_test::identity;
+using visfeat_test::in;
 
 /** A crease y 19..20 from corner V4 (x <= 3) to corner V5 (x >= 36) between faces F1
  * (below) and F2 (above); a blob V6 beside it, in F1. */

@@ -5,6 +5,7 @@
 
 #include <visfeat/core/graph/contact_creases.h>
 #include <visfeat/core/graph/edge_bridges.h>
+#include <visfeat/core/graph/open_faces.h>
 #include <visfeat/impl/visibility_feature_estimation.hpp>
 
 #include <array>
@@ -177,6 +178,11 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::joinSplitCorners(
   // And a corner at the end of one edge only, beside the corner of the edge's two
   // faces (deadEndCornerMerge), joins its edge: the bridges take the edge on.
   mergeKeepingAngles(deadEndCornerMerge(results.graph));
+  // A face sliver bounded by one crease between two corners (openFaceMerge) joins the
+  // face it was cut from; the vertex that then lies inside one crease
+  // (creaseInnerVertexMerge) joins it.
+  mergeKeepingAngles(openFaceMerge(results.graph));
+  mergeKeepingAngles(creaseInnerVertexMerge(results.graph));
 }
 
 template <typename PointInT, typename PointOutT>
