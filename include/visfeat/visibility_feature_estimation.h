@@ -533,15 +533,15 @@ private:
    * no edge between them anywhere, get an edge region along the crease
    * (locateContactCreases()); cells, points, graph and crease angles follow. */
   void addContactCreases(Results& results, const Run& run, PointCloudOut& output) const;
-  /** Last: two vertex regions that share two edges, one going on to a third vertex,
-   * are one corner (splitCornerMerge; a contact corner beside a corner); then an edge
-   * of too few points for a turn, dead ending at a corner, joins it (cornerSpurMerge).
-   */
+  /** Corners split in two, corner spurs, dead-end corners, open faces (see there). */
   void joinSplitCorners(Results& results, const Run& run, PointCloudOut& output) const;
   /** Then an edge that stops short of its corner is bridged to it (bridgesToCorners;
    * clouds only). */
   void
   bridgeEdgesToCorners(Results& results, const Run& run, PointCloudOut& output) const;
+  /** Last: each corner takes the point nearest where its creases meet (cornerMeets). */
+  void
+  placeCornersAtMeets(Results& results, const Run& run, PointCloudOut& output) const;
   /** Points after addRegions(): see addContactCreases(). */
   void relabelAddedPoints(const Results& results,
                           PointCloudOut& output,

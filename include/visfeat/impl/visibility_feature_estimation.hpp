@@ -48,6 +48,20 @@ calmerResolution(int resolution, double cells)
                   static_cast<int>(std::floor(resolution * kCalmRoughness / cells)));
 }
 
+/** \brief The graph nodes' point geometry (centroid, box, point count) from the
+ * labelled points; cells, arcs and crease angles stay. */
+template <typename PointOutT>
+void
+refreshPointGeometry(std::size_t regions,
+                     const pcl::PointCloud<PointOutT>& output,
+                     TopologyGraph& graph)
+{
+  RegionPointGeometry geometry(regions);
+  for (const PointOutT& p : output.points)
+    geometry.add(p.label, Eigen::Vector3d(p.x, p.y, p.z));
+  geometry.applyTo(graph);
+}
+
 } // namespace detail
 
 template <typename PointInT, typename PointOutT>
@@ -246,10 +260,8 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::buildGraph(
   results.graph = TopologyGraph::build(results.band, results.segmentation.cellLabels(),
                                        results.segmentation.regionClasses(), run.graph);
   // Node geometry from the labelled output points themselves.
-  RegionPointGeometry geometry(results.segmentation.regions().size());
-  for (const PointOutT& p : output.points)
-    geometry.add(p.label, Eigen::Vector3d(p.x, p.y, p.z));
-  geometry.applyTo(results.graph);
+  detail::refreshPointGeometry(results.segmentation.regions().size(), output,
+                               results.graph);
 }
 
 template <typename PointInT, typename PointOutT>
@@ -391,6 +403,7 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::computeResults(
   claimCornerPoints(results, run, *surface, output);
   joinSplitCorners(results, run, output);
   bridgeEdgesToCorners(results, run, output);
+  placeCornersAtMeets(results, run, output);
   run.times.graph_ms = detail::millisecondsSince(start);
   checkResults(results, run);
   return results;
