@@ -539,7 +539,8 @@ private:
    * clouds only). */
   void
   bridgeEdgesToCorners(Results& results, const Run& run, PointCloudOut& output) const;
-  /** Last: each corner takes the point nearest where its creases meet (cornerMeets). */
+  /** Before the bridges: each corner takes the point nearest where its creases meet
+   * (cornerMeets) and the face cells around it. */
   void
   placeCornersAtMeets(Results& results, const Run& run, PointCloudOut& output) const;
   /** Points after addRegions(): see addContactCreases(). */

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <visfeat/core/graph/contact_creases.h>
+#include <visfeat/core/graph/corner_meets.h>
 #include <visfeat/core/graph/edge_bridges.h>
 #include <visfeat/core/graph/open_faces.h>
 #include <visfeat/impl/visibility_feature_estimation.hpp>
@@ -216,6 +217,101 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::bridgeEdgesToCorners(
     if (into[added] == added && added != renumbered[bridge.edge])
       into[added] = renumbered[bridge.edge]; // (a cell two bridges share: the first's)
   }
+  const std::vector<std::uint32_t> joined =
+    applyRegionMerge(results, run, output, into);
+  if (joined.empty())
+    buildGraph(results, run, output);
+  std::vector<std::uint32_t> now = renumbered; // through both renumberings
+  if (!joined.empty())
+    for (std::uint32_t& label : now)
+      label = joined[label];
+  detail::restoreCreaseAngles(results.graph, angle_of, now);
+}
+
+template <typename PointInT, typename PointOutT>
+void
+VisibilityFeatureEstimation<PointInT, PointOutT>::placeCornersAtMeets(
+  Results& results, const Run& run, PointCloudOut& output) const
+{
+  if (run.segmentation.raw || !run.segmentation.complete_regions)
+    return;
+  const VoxelBand& band = results.band;
+  std::vector<Eigen::Vector3d> points(output.size());
+  std::vector<std::uint32_t> labels(output.size());
+  for (std::size_t i = 0; i < output.size(); ++i) {
+    points[i] =
+      band.grid().toCellUnits(output[i].getVector3fMap().template cast<double>());
+    labels[i] = output[i].label;
+  }
+  CornerMeetParameters parameters;
+  parameters.max_point_distance =
+    kCornerClaimDistances * run.segmentation.point_feature_distance;
+  std::vector<std::uint64_t> points_per_label(results.segmentation.regions().size() + 1,
+                                              0);
+  for (const std::uint32_t label : labels)
+    if (label < points_per_label.size())
+      ++points_per_label[label];
+  // Each corner takes the point nearest its meet, and the face cells around it
+  // (within point_feature_distance of the point's cell): a region joined to the
+  // corner, so the graph joins the corner to the creases that end there.
+  const auto vertex = static_cast<std::uint8_t>(FeatureClass::kVertex);
+  const double ball = std::max(1.0, run.segmentation.point_feature_distance);
+  const int reach = static_cast<int>(std::floor(ball));
+  std::vector<std::vector<CellId>> blobs;
+  std::vector<std::uint32_t> owners;
+  bool moved = false;
+  for (const CornerMeet& m : cornerMeets(results.graph, points, labels, parameters)) {
+    if (m.point == CornerMeet::kNoPoint)
+      continue;
+    PointOutT& p = output[m.point];
+    // the vertex's own point already, another vertex's, or a region's last point
+    if (p.label == m.vertex || p.feature_class == vertex ||
+        points_per_label[p.label] < 2)
+      continue;
+    --points_per_label[p.label];
+    ++points_per_label[m.vertex];
+    p.label = m.vertex;
+    p.feature_class = vertex;
+    moved = true;
+    const CellId cell =
+      bandCellOf(band, static_cast<std::size_t>((*indices_)[m.point]));
+    if (cell == kNoCell)
+      continue;
+    std::vector<CellId> blob;
+    for (int dz = -reach; dz <= reach; ++dz)
+      for (int dy = -reach; dy <= reach; ++dy)
+        for (int dx = -reach; dx <= reach; ++dx) {
+          const CellId c = band.find(band.coord(cell) + CellCoord(dx, dy, dz));
+          if (c != kNoCell && dx * dx + dy * dy + dz * dz <= ball * ball)
+            blob.push_back(c);
+        }
+    blobs.push_back(std::move(blob));
+    owners.push_back(m.vertex);
+  }
+  if (!moved)
+    return;
+  if (blobs.empty()) {
+    detail::refreshPointGeometry(results.segmentation.regions().size(), output,
+                                 results.graph);
+    return;
+  }
+  const std::vector<double> angle_of = detail::creaseAnglesOf(results.graph);
+  const std::vector<std::uint32_t> renumbered = results.segmentation.addRegions(
+    blobs, std::vector<FeatureClass>(blobs.size(), FeatureClass::kVertex));
+  relabelAddedPoints(results, output, renumbered);
+  // the new regions (the labels no old one maps to) join their corners
+  const std::vector<std::uint32_t>& cell_labels = results.segmentation.cellLabels();
+  std::vector<std::uint32_t> into(results.segmentation.regions().size() + 1);
+  std::iota(into.begin(), into.end(), 0u);
+  std::vector<char> old(into.size(), 0);
+  for (const std::uint32_t label : renumbered)
+    old[label] = 1;
+  for (std::size_t k = 0; k < blobs.size(); ++k)
+    for (const CellId c : blobs[k]) {
+      const std::uint32_t label = cell_labels[static_cast<std::size_t>(c)];
+      if (label != 0 && !old[label])
+        into[label] = renumbered[owners[k]];
+    }
   const std::vector<std::uint32_t> joined =
     applyRegionMerge(results, run, output, into);
   if (joined.empty())

@@ -402,8 +402,8 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::computeResults(
   cleanUpRegions(results, run, output);
   claimCornerPoints(results, run, *surface, output);
   joinSplitCorners(results, run, output);
-  bridgeEdgesToCorners(results, run, output);
   placeCornersAtMeets(results, run, output);
+  bridgeEdgesToCorners(results, run, output);
   run.times.graph_ms = detail::millisecondsSince(start);
   checkResults(results, run);
   return results;

@@ -1,11 +1,9 @@
 // VisibilityFeatureEstimation (not for inclusion on its own): the per-point output,
-// each point labelled from the band cell it falls in (PointLabeling), the corner
-// points that vertex regions no point falls in claim, and the point where each
-// corner's creases meet (cornerMeets).
+// each point labelled from the band cell it falls in (PointLabeling), and the corner
+// points that vertex regions no point falls in claim.
 #pragma once
 
 #include <visfeat/core/common/threads.h>
-#include <visfeat/core/graph/corner_meets.h>
 #include <visfeat/core/segmentation/point_labeling.h>
 #include <visfeat/impl/visibility_feature_estimation.hpp>
 
@@ -152,49 +150,6 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::claimCornerPoints(
     claimed = true;
   }
   if (claimed)
-    detail::refreshPointGeometry(results.segmentation.regions().size(), output,
-                                 results.graph);
-}
-
-template <typename PointInT, typename PointOutT>
-void
-VisibilityFeatureEstimation<PointInT, PointOutT>::placeCornersAtMeets(
-  Results& results, const Run& run, PointCloudOut& output) const
-{
-  if (run.segmentation.raw || !run.segmentation.complete_regions)
-    return;
-  const GridSpec& grid = results.band.grid();
-  std::vector<Eigen::Vector3d> points(output.size());
-  std::vector<std::uint32_t> labels(output.size());
-  for (std::size_t i = 0; i < output.size(); ++i) {
-    points[i] = grid.toCellUnits(output[i].getVector3fMap().template cast<double>());
-    labels[i] = output[i].label;
-  }
-  CornerMeetParameters parameters;
-  parameters.max_point_distance =
-    kCornerClaimDistances * run.segmentation.point_feature_distance;
-  std::vector<std::uint64_t> points_per_label(results.segmentation.regions().size() + 1,
-                                              0);
-  for (const std::uint32_t label : labels)
-    if (label < points_per_label.size())
-      ++points_per_label[label];
-  const auto vertex = static_cast<std::uint8_t>(FeatureClass::kVertex);
-  bool moved = false;
-  for (const CornerMeet& m : cornerMeets(results.graph, points, labels, parameters)) {
-    if (m.point == CornerMeet::kNoPoint)
-      continue;
-    PointOutT& p = output[m.point];
-    // the vertex's own point already, another vertex's, or a region's last point
-    if (p.label == m.vertex || p.feature_class == vertex ||
-        points_per_label[p.label] < 2)
-      continue;
-    --points_per_label[p.label];
-    ++points_per_label[m.vertex];
-    p.label = m.vertex;
-    p.feature_class = vertex;
-    moved = true;
-  }
-  if (moved)
     detail::refreshPointGeometry(results.segmentation.regions().size(), output,
                                  results.graph);
 }
