@@ -253,6 +253,9 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::searchResolution(
         << "stays at " << current << ": ";
       if (step >= kMaxSearchSteps)
         w << "the search's last step";
+      else if (current >= run.search_cap) // e.g. a chosen resolution above the cap
+        w << "the search stops at " << run.search_cap << " (" << run.search_cap_reason
+          << ") and " << current << " is already beyond it";
       else
         w << "the search goes up to " << run.search_cap << ", "
           << run.search_cap_reason;
