@@ -13,6 +13,9 @@
 #                    -resolution -> the points support 12x-13x, raised to 256 with the
 #                    band filled between them, and the cube's graph
 #   coplanar         a flat square patch -> processed, with a note, as one face
+#   too_sparse       300 points of the U prism (16 corners, 24 creases) -> whatever it
+#                    finds, the tool's output and the graph JSON carry a warning (a
+#                    result that cannot be trusted never comes bare)
 
 cmake_minimum_required(VERSION 3.19) # string(JSON); policies NEW (CMP0053)
 
@@ -235,6 +238,22 @@ elseif(CASE STREQUAL "coplanar")
   expect_output("Note: all points lie in a plane: expect one face")
   expect_pcd("${out}" "${out_fields}" 10000)
   expect_graph("${graph}" 0 0 1 0)
+elseif(CASE STREQUAL "too_sparse")
+  set(cloud "${dir}/u_prism.pcd")
+  run("${GENERATE}" u_prism "${cloud}" -points 300 -seed 3)
+  run("${VISFEAT}" "${cloud}" "${out}" -graph "${graph}")
+  expect_output("Warning: ")
+  expect_pcd("${out}" "x y z curve_distance face_id visibility_radius label feature_class"
+             300)
+  if(EXISTS "${graph}")
+    read_json(json "${graph}")
+    string(JSON warnings ERROR_VARIABLE json_error LENGTH "${json}" warnings)
+    if(json_error OR NOT warnings GREATER 0)
+      fail("${graph}: no warning in the graph JSON (${json_error})")
+    endif()
+  else()
+    fail("${graph} was not written")
+  endif()
 else()
   message(FATAL_ERROR "end_to_end_test.cmake: unknown CASE '${CASE}'")
 endif()
