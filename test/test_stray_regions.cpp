@@ -275,28 +275,31 @@ TEST(StrayRegions, ABlobBesideACornersCreasesJoinsTheCorner)
 
 /** Corner V4 (x, y <= 2) with crease E3 up (x <= 1) to V7 and crease E2 along y <= 1
  * to V6; beside the corner, on E2's line, a corner piece V5 (x 4) and a crease piece
- * E8 (x 3) between the two: V4 and V5 each end E8, and share it and E2 (which goes on
- * to V6; dilation radius 3, so that E2 reaches V4 across the pieces), so they are one
- * corner split in two: V5 and E8 join V4, the larger. */
+ * E8 (x 3) between the two; `face` elsewhere. With dilation radius 3 E2 reaches V4
+ * across the pieces. */
+std::uint32_t
+splitCorner(int x, int y, std::uint32_t face)
+{
+  if (x <= 2 && y <= 2)
+    return 4;
+  if (y <= 1 && x == 3)
+    return 8;
+  if (y <= 1 && x == 4)
+    return 5;
+  if (y <= 1)
+    return x >= 36 ? 6 : 2;
+  if (x <= 1)
+    return y >= 36 ? 7 : 3;
+  return face;
+}
+
+/** splitCorner with face F1: V4 and V5 each end E8, and share it and E2 (which goes
+ * on to V6), so they are one corner split in two: V5 and E8 join V4, the larger. */
 TEST(StrayRegions, ACornerSplitInTwoIsOneCorner)
 {
   const std::vector<FeatureClass> classes{kF, kE, kE, kV, kV, kV, kV, kE};
   const Sheet sheet(
-    classes,
-    [](int x, int y) -> std::uint32_t {
-      if (x <= 2 && y <= 2)
-        return 4;
-      if (y <= 1 && x == 3)
-        return 8;
-      if (y <= 1 && x == 4)
-        return 5;
-      if (y <= 1)
-        return x >= 36 ? 6 : 2;
-      if (x <= 1)
-        return y >= 36 ? 7 : 3;
-      return 1;
-    },
-    3);
+    classes, [](int x, int y) { return splitCorner(x, y, 1); }, 3);
   const std::vector<std::uint32_t> v4 = sheet.graph.neighbours(4, kE);
   const std::vector<std::uint32_t> v5 = sheet.graph.neighbours(5, kE);
   ASSERT_NE(std::find(v4.begin(), v4.end(), 2u), v4.end());
@@ -309,32 +312,21 @@ TEST(StrayRegions, ACornerSplitInTwoIsOneCorner)
   EXPECT_EQ(visfeat::splitCornerMerge(sheet.graph), expected);
 }
 
-/** The split corner of ACornerSplitInTwoIsOneCorner with a crease E9 (x 6..7, y
- * 2..14) leaving its piece V5 between F1 (x < 6) and F11 (x >= 6), and further up
- * the same line a crease E10 (y 24..30) with no corner between the same faces. E9
- * ends at a corner (the piece is part of V4), so it is no piece of a broken rim and
- * E10 stays apart. */
+/** The split corner (splitCorner) with a crease E9 (x 6..7, y 2..14) leaving its
+ * piece V5 between F1 (x < 6) and F11 (x >= 6), and further up the same line a crease
+ * E10 (y 24..30) with no corner between the same faces. E9 ends at a corner (the
+ * piece is part of V4), so it is no piece of a broken rim and E10 stays apart. */
 TEST(StrayRegions, ACreaseEndingAtASplitCornerIsNoPieceOfABrokenRim)
 {
   const std::vector<FeatureClass> classes{kF, kE, kE, kV, kV, kV, kV, kE, kE, kE, kF};
   const Sheet sheet(
     classes,
     [](int x, int y) -> std::uint32_t {
-      if (x <= 2 && y <= 2)
-        return 4;
-      if (y <= 1 && x == 3)
-        return 8;
-      if (y <= 1 && x == 4)
-        return 5;
-      if (y <= 1)
-        return x >= 36 ? 6 : 2;
-      if (x <= 1)
-        return y >= 36 ? 7 : 3;
       if (in(x, 6, 7) && in(y, 2, 14))
         return 9;
       if (in(x, 6, 7) && in(y, 24, 30))
         return 10;
-      return x < 6 ? 1 : 11;
+      return splitCorner(x, y, x < 6 ? 1 : 11);
     },
     3);
   ASSERT_EQ(sheet.graph.verticesOfEdge(8), Labels({4, 5}));

@@ -502,21 +502,18 @@ private:
                    const Run& run,
                    const PointCloudIn& surface,
                    PointCloudOut& output) const;
-  /** The band cell of input point `index` (kNoCell for a non-finite point): the
-   * band's own record for the points of the band's cloud (noise mode's smoothed
-   * surface), else the cell the input point falls in. */
+  /** The band cell of input point `index` (kNoCell if not finite): the band's record
+   * for the band's own cloud (noise mode's smoothed surface), else the point's cell. */
   CellId bandCellOf(const VoxelBand& band, std::size_t index) const;
-  /** Last step of the labelling: a vertex region that no point took
-   * (pointlessVertices) claims the point nearest to its cells within
-   * kCornerClaimDistances x point_feature_distance that is not another vertex's. */
+  /** A vertex region no point took (pointlessVertices) claims the nearest point within
+   * kCornerClaimDistances x point_feature_distance that is no other vertex's. */
   void claimCornerPoints(Results& results,
                          const Run& run,
                          const PointCloudIn& surface,
                          PointCloudOut& output) const;
   void buildGraph(Results& results, const Run& run, const PointCloudOut& output) const;
-  /** Relabels cells, points and the graph after FeatureSegmentation::mergeRegions
-   * (into: per label, the label it joins); returns mergeRegions' renumbering, empty
-   * when nothing joins anything. */
+  /** Cells, points and graph after FeatureSegmentation::mergeRegions(into); returns
+   * its renumbering, empty when nothing joins anything. */
   std::vector<std::uint32_t>
   applyRegionMerge(Results& results,
                    const Run& run,
@@ -547,6 +544,14 @@ private:
   void relabelAddedPoints(const Results& results,
                           PointCloudOut& output,
                           const std::vector<std::uint32_t>& renumbered) const;
+  /** Then `into` joins the added regions: merge, graph, and the crease angles of
+   * before addRegions() (angle_of) through its renumbering and the merge's. */
+  void joinAddedRegions(Results& results,
+                        const Run& run,
+                        PointCloudOut& output,
+                        const std::vector<std::uint32_t>& into,
+                        const std::vector<std::uint32_t>& renumbered,
+                        const std::vector<double>& angle_of) const;
 
   bool fail(const std::string& message);
 

@@ -188,6 +188,27 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::joinSplitCorners(
 
 template <typename PointInT, typename PointOutT>
 void
+VisibilityFeatureEstimation<PointInT, PointOutT>::joinAddedRegions(
+  Results& results,
+  const Run& run,
+  PointCloudOut& output,
+  const std::vector<std::uint32_t>& into,
+  const std::vector<std::uint32_t>& renumbered,
+  const std::vector<double>& angle_of) const
+{
+  const std::vector<std::uint32_t> joined =
+    applyRegionMerge(results, run, output, into);
+  if (joined.empty())
+    buildGraph(results, run, output);
+  std::vector<std::uint32_t> now = renumbered; // through both renumberings
+  if (!joined.empty())
+    for (std::uint32_t& label : now)
+      label = joined[label];
+  detail::restoreCreaseAngles(results.graph, angle_of, now);
+}
+
+template <typename PointInT, typename PointOutT>
+void
 VisibilityFeatureEstimation<PointInT, PointOutT>::bridgeEdgesToCorners(
   Results& results, const Run& run, PointCloudOut& output) const
 {
@@ -217,15 +238,7 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::bridgeEdgesToCorners(
     if (into[added] == added && added != renumbered[bridge.edge])
       into[added] = renumbered[bridge.edge]; // (a cell two bridges share: the first's)
   }
-  const std::vector<std::uint32_t> joined =
-    applyRegionMerge(results, run, output, into);
-  if (joined.empty())
-    buildGraph(results, run, output);
-  std::vector<std::uint32_t> now = renumbered; // through both renumberings
-  if (!joined.empty())
-    for (std::uint32_t& label : now)
-      label = joined[label];
-  detail::restoreCreaseAngles(results.graph, angle_of, now);
+  joinAddedRegions(results, run, output, into, renumbered, angle_of);
 }
 
 template <typename PointInT, typename PointOutT>
@@ -312,15 +325,7 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::placeCornersAtMeets(
       if (label != 0 && !old[label])
         into[label] = renumbered[owners[k]];
     }
-  const std::vector<std::uint32_t> joined =
-    applyRegionMerge(results, run, output, into);
-  if (joined.empty())
-    buildGraph(results, run, output);
-  std::vector<std::uint32_t> now = renumbered; // through both renumberings
-  if (!joined.empty())
-    for (std::uint32_t& label : now)
-      label = joined[label];
-  detail::restoreCreaseAngles(results.graph, angle_of, now);
+  joinAddedRegions(results, run, output, into, renumbered, angle_of);
 }
 
 } // namespace visfeat
