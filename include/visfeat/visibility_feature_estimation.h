@@ -540,12 +540,12 @@ private:
    * (cornerMeets) and the face cells around it. */
   void
   placeCornersAtMeets(Results& results, const Run& run, PointCloudOut& output) const;
-  /** Points after addRegions(): see addContactCreases(). */
+  /** Points after addRegions() (see addContactCreases()); then `into` joins the added
+   * regions: merge, graph, crease angles of before (angle_of) through both
+   * renumberings. */
   void relabelAddedPoints(const Results& results,
                           PointCloudOut& output,
                           const std::vector<std::uint32_t>& renumbered) const;
-  /** Then `into` joins the added regions: merge, graph, and the crease angles of
-   * before addRegions() (angle_of) through its renumbering and the merge's. */
   void joinAddedRegions(Results& results,
                         const Run& run,
                         PointCloudOut& output,

@@ -56,6 +56,13 @@ public:
           lists_[index(x, y, z)].push_back(id);
   }
 
+  /** Empties every cell's list; the lattice's geometry stays. */
+  void clear()
+  {
+    for (std::vector<std::uint32_t>& list : lists_)
+      list.clear();
+  }
+
   /** The entries listed in the cell of p (none when p lies outside). */
   const std::vector<std::uint32_t>& near(const Eigen::Vector3d& p) const
   {
@@ -180,7 +187,8 @@ cornerMeets(const TopologyGraph& graph,
   }
   std::vector<CornerMeet> meets;
   std::vector<std::size_t> meet_of(n + 1, 0); // index into meets + 1
-  CoarseLattice meet_lattice(points, radius);
+  CoarseLattice& meet_lattice = lattice; // same points and cell size: now the meets
+  meet_lattice.clear();
   for (std::uint32_t v = 1; v <= n; ++v) {
     CornerMeet m;
     m.vertex = v;
