@@ -114,6 +114,42 @@ TEST(TangentPlanes, MeasureTheNoiseOfTheFaces)
   }
 }
 
+TEST(TangentPlanes, TellTheSpreadOfASparseCleanCloudFromNoise)
+{
+  // A corrugated sheet sampled sparsely: folds of 90 degrees 3 spacings apart, so the
+  // 10 nearest neighbours of most points span a fold and the median RMS about their
+  // plane reads the shape; the neighbourhoods inside a strip still lie exactly flat.
+  // Gaussian noise of 5% of the spacing on a flat sheet leaves none flat.
+  std::mt19937 rng(27);
+  std::uniform_real_distribution<double> jitter(-0.3, 0.3);
+  const auto fold = [](double x) { // period 6, slopes +-1
+    const double t = std::fmod(x, 6.0);
+    return t < 3.0 ? t : 6.0 - t;
+  };
+  std::vector<Eigen::Vector3d> corrugated, flat;
+  std::normal_distribution<double> gauss(0.0, 0.05);
+  for (int i = 0; i < 40; ++i)
+    for (int j = 0; j < 20; ++j) {
+      // spacing 1 along the sheet: x steps of 1 / sqrt(2) across the 45-degree strips
+      const double x = (i + jitter(rng)) / std::sqrt(2.0), y = j + jitter(rng);
+      corrugated.emplace_back(x, y, fold(x));
+      flat.emplace_back(i + jitter(rng), y, gauss(rng));
+    }
+  const int k = visfeat::LocalTriangleParameters{}.neighbours + 1;
+  double noise = -1.0, flat_share = -1.0;
+  visfeat::tangentPlanes(corrugated, nearest(corrugated, k), k, 2, &noise, &flat_share);
+  EXPECT_GT(noise, 0.05); // the shape: above the noisy sheet's reading
+  EXPECT_GE(flat_share, visfeat::kShapeNotNoiseShare);
+  EXPECT_LT(flat_share, 0.5); // most neighbourhoods span a fold
+  visfeat::tangentPlanes(flat, nearest(flat, k), k, 1, &noise, &flat_share);
+  EXPECT_GT(noise, 0.03);
+  EXPECT_LT(flat_share, 0.01);
+  // a noise-free crease: most neighbourhoods lie on one face
+  const std::vector<Eigen::Vector3d> clean = rightAngleCrease(rng);
+  visfeat::tangentPlanes(clean, nearest(clean, k), k, 1, &noise, &flat_share);
+  EXPECT_GT(flat_share, 0.5);
+}
+
 TEST(TangentPlanes, TheCurvatureOfASparseCurvedFaceIsNotNoise)
 {
   // A cylinder of radius 3 sampled about 0.43 apart (11 neighbours within about 0.8):

@@ -226,6 +226,46 @@ TEST(EstimatorFill, ANoisySparseCloudGetsACalmerResolutionOrAWarning)
   ASSERT_FALSE(est.getWarnings().empty()) << "closer features merge";
   EXPECT_NE(est.getWarnings().front().find("for the points' noise"), std::string::npos)
     << est.getWarnings().front();
+  for (const std::string& w : est.getWarnings())
+    EXPECT_EQ(w.find("too sparse for the part"), std::string::npos) << w;
+}
+
+TEST(EstimatorFill, ACleanCloudTooSparseForItsPartIsCalledSparseNotNoisy)
+{
+  // 1,000 noise-free points of parts whose faces are a few spacings wide: the planes of
+  // most points' neighbourhoods span a crease and read as 0.1-0.3 cells of "noise" at
+  // the topology resolution, yet the rest lie exactly flat. The warnings name sparsity
+  // and a denser sample (the resolution is as fine as the fill supports), never noise
+  // or its remedies, nor finer cells. The U prism reads above the threshold at which
+  // the resolution is lowered: its first warning says why.
+  for (const char* name : {"u_prism", "icosahedron", "box_with_hole"})
+    for (const unsigned seed : {3u, 4u, 5u}) {
+      const syn::CadModel model =
+        syn::rotated(syn::cadModelByName(name), syn::randomRotation(seed));
+      syn::SamplingOptions options;
+      options.count = 1000;
+      options.seed = seed;
+      Estimator est;
+      est.setInputCloud(cloudOf(syn::sampleCadModel(model, options)));
+      est.setResolution(0);
+      Output out;
+      est.compute(out);
+      ASSERT_EQ(est.getErrorMessage(), "");
+      ASSERT_FALSE(est.getWarnings().empty()) << name << " " << seed;
+      const std::string& first = est.getWarnings().front();
+      if (std::string(name) == "u_prism") {
+        EXPECT_NE(first.find("too sparse for the part"), std::string::npos) << first;
+      }
+      bool denser = false;
+      for (const std::string& w : est.getWarnings()) {
+        denser = denser || w.find("sample denser") != std::string::npos;
+        EXPECT_EQ(w.find("noise mode"), std::string::npos) << w;
+        EXPECT_EQ(w.find("MovingLeastSquares"), std::string::npos) << w;
+        EXPECT_EQ(w.find("raise the resolution"), std::string::npos) << w;
+        EXPECT_EQ(w.find("set a finer resolution"), std::string::npos) << w;
+      }
+      EXPECT_TRUE(denser) << name << " " << seed << ": " << first;
+    }
 }
 
 TEST(EstimatorFill, ABandTooCoarseForItsFeaturesWarns)

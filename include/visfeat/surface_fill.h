@@ -145,6 +145,9 @@ struct FillReport
    * for Gaussian noise of sigma per coordinate), or -1 when the fill did not measure
    * it (meshes, organized clouds, creases not rebuilt). */
   double noise = -1.0;
+  /** \brief The share of the points whose neighbourhood lies flat (tangentPlanes()'
+   * flat_share), or -1 when the noise was not measured. */
+  double flat_share = -1.0;
 };
 
 /** \brief The cells of the umbrella triangles of a cloud's finite points

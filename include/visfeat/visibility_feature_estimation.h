@@ -454,6 +454,8 @@ private:
     std::string search_cap_reason; // why it stops there
     std::string fill_reason;
     double point_noise = -1.0; // cells: the fill's measure (FillReport::noise), or -1
+    double point_flat_share = -1.0; // FillReport::flat_share (kShapeNotNoiseShare)
+    bool calmed = false;            // lowered for the points' noise (calmResolution())
     std::vector<std::string> notes;
     std::vector<std::string> warnings;
     PhaseTimes times;

@@ -99,7 +99,8 @@ localTriangleCells(const pcl::PointCloud<PointT>& cloud,
   if (parameters.crease_degrees >= 180.0)
     return rasterizeTriangles(grid, points, triangles, threads);
   const std::vector<TangentPlane> planes =
-    tangentPlanes(points, neighbours, k, threads, report ? &report->noise : nullptr);
+    tangentPlanes(points, neighbours, k, threads, report ? &report->noise : nullptr,
+                  report ? &report->flat_share : nullptr);
   std::vector<CellCoord> cells = creaseFillCells(grid, points, planes, triangles,
                                                  parameters.crease_degrees, threads);
   const std::vector<CellCoord> strips = creaseStripCells(

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <visfeat/core/band/band_pieces.h>
+#include <visfeat/core/band/tangent_planes.h>
 #include <visfeat/core/graph/graph_gaps.h>
 #include <visfeat/impl/visibility_feature_estimation.hpp>
 
@@ -26,10 +27,37 @@ roughPoints(double band_roughness, bool noise_mode, double point_noise)
          point_noise > kNoisyPointNoise;
 }
 
-/** The advice of a warning that finer cells would help, unless the points are rough. */
-constexpr const char* kRoughPointsAdvice =
-  "the points are rough (see the warning that they scatter), and finer cells would "
-  "make that worse: follow that warning first";
+/** Why the search for narrow faces stops where it does when nothing but its own limit
+ * stops it (Run::search_cap_reason); any other reason is what the points support. */
+constexpr const char* kSearchLimitReason = "the search's limit";
+
+/** Whether the points' noise the fill measured reads the shape of a cloud too sparse
+ * for its creases rather than noise (kShapeNotNoiseShare). */
+inline bool
+noiseIsShape(double flat_share)
+{
+  return flat_share >= kShapeNotNoiseShare;
+}
+
+/** The points' noise in words: "noise", or "spread" with its cause when it is the
+ * shape. */
+inline std::string
+pointSpreadName(double flat_share)
+{
+  return noiseIsShape(flat_share) ? "spread" : "noise";
+}
+
+/** The advice of a warning that finer cells would help, unless the points are rough
+ * (or too sparse for their creases, which reads the same). */
+inline const char*
+roughPointsAdvice(double flat_share)
+{
+  return noiseIsShape(flat_share)
+           ? "the points are too sparse for the part (see the warning on their "
+             "spread), and finer cells would not help: follow that warning first"
+           : "the points are rough (see the warning on their noise), and finer "
+             "cells would make that worse: follow that warning first";
+}
 
 } // namespace detail
 
@@ -50,7 +78,17 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::checkResults(const Results& re
       ++faces;
   const int resolution = run.resolution.resolution;
   const bool rough =
-    detail::roughPoints(band.roughness(), noise_mode_, run.point_noise);
+    detail::roughPoints(band.roughness(), noise_mode_, run.point_noise) || run.calmed;
+  // the automatic resolution is already as fine as the points support: finer cells
+  // need more points (or the fill, from the points alone)
+  const bool at_points_cap = run.search_cap > 0 && resolution >= run.search_cap &&
+                             run.search_cap_reason != detail::kSearchLimitReason;
+  const auto denser = [&](std::ostream& out) {
+    out << "sample denser: resolution " << resolution << " is "
+        << run.search_cap_reason;
+    if (run.fill == SurfaceFill::kPoints)
+      out << "; or fill the band between the points (fill 'triangles')";
+  };
   const double core_share = band.empty() ? 0.0 : double(cores) / double(band.size());
   const double repair_share =
     band.empty() ? 0.0 : double(band.repairCellCount()) / double(band.size());
@@ -76,7 +114,10 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::checkResults(const Results& re
       << 2 * min_radius << " cells at resolution " << resolution
       << " or the band is broken: ";
     if (rough) {
-      w << detail::kRoughPointsAdvice;
+      w << detail::roughPointsAdvice(run.point_flat_share);
+    } else if (at_points_cap) {
+      denser(w);
+      w << "; or lower min_radius";
     } else {
       w << "raise the resolution";
       if (run.fill == SurfaceFill::kPoints && run.resolution.spacing > 0.0)
@@ -93,7 +134,9 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::checkResults(const Results& re
       << min_radius << " cells of a feature at resolution " << resolution
       << ", so small faces and close edges merge or vanish; ";
     if (rough) {
-      w << detail::kRoughPointsAdvice;
+      w << detail::roughPointsAdvice(run.point_flat_share);
+    } else if (at_points_cap) {
+      denser(w);
     } else {
       w << "raise the resolution";
       if (!noise_mode_)
@@ -115,16 +158,28 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::checkResults(const Results& re
   if (run.point_noise > kNoisyPointNoise) {
     const int calmer = detail::calmerResolution(resolution, run.point_noise);
     std::ostringstream r;
-    r << "the points scatter about their local planes: noise "
-      << std::round(1000.0 * run.point_noise) / 1000.0
-      << " cells (RMS about the planes fitted to each point's neighbours; clean clouds "
-         "give about 0, and counts break from about 0.17): the band filled between the "
-         "points is as rough, and the result may be wrong; smooth the points first "
-         "(pcl::MovingLeastSquares), sample denser, or use a resolution of "
-      << calmer << " or lower with the fill 'triangles' (setSurfaceFill()), where "
-      << "features need to lie about " << std::setprecision(3)
-      << 2 * min_radius * run.grid.cell_size * resolution / calmer
-      << " apart (world units)";
+    if (detail::noiseIsShape(run.point_flat_share)) {
+      r << "the points are too sparse for the part: the planes fitted to each point's "
+           "neighbours leave "
+        << std::round(1000.0 * run.point_noise) / 1000.0 << " cells (median RMS), yet "
+        << std::round(100.0 * run.point_flat_share)
+        << "% of the neighbourhoods lie exactly flat, so this is the shape, not "
+           "noise: the neighbours of most points span a crease (faces only a few "
+           "point spacings wide); the band filled between them is as rough, and the "
+           "result may be wrong; sample denser (faces about 10 spacings wide or more)";
+    } else {
+      r << "the points scatter about their local planes: noise "
+        << std::round(1000.0 * run.point_noise) / 1000.0
+        << " cells (RMS about the planes fitted to each point's neighbours; clean "
+           "clouds give about 0, and counts break from about 0.17): the band filled "
+           "between the points is as rough, and the result may be wrong; smooth the "
+           "points first (pcl::MovingLeastSquares), sample denser, or use a "
+           "resolution of "
+        << calmer << " or lower with the fill 'triangles' (setSurfaceFill()), where "
+        << "features need to lie about " << std::setprecision(3)
+        << 2 * min_radius * run.grid.cell_size * resolution / calmer
+        << " apart (world units)";
+    }
     run.warnings.insert(run.warnings.begin(), r.str()); // the cause of the others
   }
   if (repair_share > kMaxRepairShare) {

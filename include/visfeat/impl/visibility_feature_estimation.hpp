@@ -188,6 +188,7 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::fillCells(
                              run.visibility.threads, &report);
     if (report.noise >= 0.0)
       run.point_noise = report.noise / run.grid.cell_size;
+    run.point_flat_share = report.flat_share;
     return cells;
   }
   case SurfaceFill::kOrganized:

@@ -5,6 +5,7 @@
 #include <visfeat/core/graph/graph_gaps.h>
 #include <visfeat/core/grid/resolution_search.h>
 #include <visfeat/core/segmentation/narrow_faces.h>
+#include <visfeat/impl/visibility_feature_checks.hpp>
 #include <visfeat/impl/visibility_feature_estimation.hpp>
 
 #include <algorithm>
@@ -99,7 +100,7 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::chooseResolution(
     run.resolution.resolution = kTopologyResolution;
     run.resolution.reason = reason.str();
     run.search_cap = std::min(kMaxSearchResolution, GridSpec::kMaxResolution);
-    run.search_cap_reason = "the search's limit";
+    run.search_cap_reason = detail::kSearchLimitReason;
     return run.resolution.resolution;
   }
   if (may_fill && from_density < kTopologyResolution) {
@@ -125,7 +126,7 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::chooseResolution(
   }
   // The search for narrow faces may go finer, as far as the mesh or the fill allow.
   run.search_cap = std::min(kMaxSearchResolution, GridSpec::kMaxResolution);
-  run.search_cap_reason = "the search's limit";
+  run.search_cap_reason = detail::kSearchLimitReason;
   if (!may_fill) {
     run.search_cap = from_density;
     run.search_cap_reason = "what the points support without a fill";
@@ -255,19 +256,26 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::searchResolution(
         w << "the search's last step";
       else if (current >= run.search_cap) // e.g. a chosen resolution above the cap
         w << "the search stops at " << run.search_cap << " (" << run.search_cap_reason
-          << ") and " << current << " is already beyond it";
+          << ")"
+          << (current > run.search_cap
+                ? " and " + std::to_string(current) + " is already beyond it"
+                : "");
       else
         w << "the search goes up to " << run.search_cap << ", "
           << run.search_cap_reason;
       w << "; ";
-      if (detail::roughPoints(results.band.roughness(), noise_mode_, run.point_noise))
-        w << detail::kRoughPointsAdvice;
+      if (run.calmed ||
+          detail::roughPoints(results.band.roughness(), noise_mode_, run.point_noise))
+        w << detail::roughPointsAdvice(run.point_flat_share);
+      else if (run.fill == SurfaceFill::kPoints && run.search_cap <= current)
+        w << "fill the band between the points (fill 'triangles') so that the "
+             "resolution can rise to resolve them, or lower min_radius";
+      else if (run.search_cap <= current &&
+               run.search_cap_reason != detail::kSearchLimitReason)
+        w << "sample denser so that the resolution can rise to resolve them, or "
+             "lower min_radius";
       else
-        w << (run.fill == SurfaceFill::kPoints && run.search_cap <= current
-                ? "fill the band between the points (fill 'triangles') so that the "
-                  "resolution can rise"
-                : "set a finer resolution")
-          << " to resolve them, or lower min_radius";
+        w << "set a finer resolution to resolve them, or lower min_radius";
       run.warnings.push_back(w.str());
       break;
     }
@@ -316,25 +324,35 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::calmResolution(
   if (calmer >= current)
     return results;
   std::ostringstream why;
-  why << "the points' noise " << std::round(1000.0 * run.point_noise) / 1000.0
-      << " cells at " << current << ", where counts break: lowered to " << calmer
-      << ", where it is about " << kCalmRoughness << " cells";
+  const bool shape = detail::noiseIsShape(run.point_flat_share);
+  why << "the points' " << detail::pointSpreadName(run.point_flat_share) << " "
+      << std::round(1000.0 * run.point_noise) / 1000.0 << " cells at " << current
+      << ", where counts break: lowered to " << calmer << ", where it is about "
+      << kCalmRoughness << " cells"
+      << (shape ? "; that spread is the shape, not noise: the neighbourhoods of most "
+                  "points span a crease"
+                : "");
   Run calm = base;
   calm.resolution.resolution = calmer;
   calm.resolution.reason = run.resolution.reason + "; " + why.str();
   calm.raised_for_fill = !mesh_; // the band stays filled between the points
   calm.search_cap = calmer;
-  calm.search_cap_reason = "what the points' noise allows";
+  calm.calmed = true;
+  calm.search_cap_reason =
+    "what the points' " + detail::pointSpreadName(run.point_flat_share) + " allows";
   PointCloudOut calm_output = output;
   std::string problem;
   if (std::optional<Results> calm_results = runAt(calm, calmer, calm_output, problem)) {
     calm.times.search_ms += run.times.total() - run.times.shape_ms;
     std::ostringstream w;
-    w << "resolution " << calmer << " for the points' noise (" << why.str()
-      << "): features closer than about " << std::setprecision(3)
+    w << (shape ? "the points are too sparse for the part: " : "") << "resolution "
+      << calmer << " for the points' " << detail::pointSpreadName(run.point_flat_share)
+      << " (" << why.str() << "): features closer than about " << std::setprecision(3)
       << 2.0 * run.segmentation.components.min_radius * calm.grid.cell_size
-      << " (world units) merge and small ones may be lost; smooth the points "
-      << "(pcl::MovingLeastSquares) or sample denser to resolve them";
+      << " (world units) merge and small ones may be lost; "
+      << (shape ? "sample denser to resolve them"
+                : "smooth the points (pcl::MovingLeastSquares) or sample denser to "
+                  "resolve them");
     calm.warnings.insert(calm.warnings.begin(), w.str());
     output.swap(calm_output);
     run = std::move(calm);

@@ -55,6 +55,14 @@ constexpr std::size_t kQuadricMinPoints = 8;
  * tens to hundreds of times the quadric's. */
 constexpr double kCurvatureRatio = 10.0;
 
+/** A set lies flat when its reported residual (plane or quadric) is at most this share
+ * of its mean distance from the point: noise-free samples read about 1e-16 there, and
+ * Gaussian noise of sigma per coordinate reads about 0.85 sigma, so a cloud whose
+ * noise is at least 2% of its spacing has almost no flat set (a residual below 0.01 of
+ * the spacing is below 0.6 of its median: chi with 8 degrees of freedom, about 1e-4 of
+ * the sets at 2%). */
+constexpr double kFlatResidualShare = 0.01;
+
 /** Sum of squared distances of the set from the quadric height function fitted over
  * `plane` (along its normal). */
 double
@@ -221,7 +229,8 @@ tangentPlanes(const std::vector<Eigen::Vector3d>& points,
               const std::vector<std::uint32_t>& neighbours,
               int k,
               int threads,
-              double* noise_out)
+              double* noise_out,
+              double* flat_share_out)
 {
   if (k < 0 || neighbours.size() != points.size() * static_cast<std::size_t>(k))
     throw Error("tangentPlanes: the neighbour table does not match the points");
@@ -248,9 +257,13 @@ tangentPlanes(const std::vector<Eigen::Vector3d>& points,
   // face is curved (the curvature of a sparse curved face is not noise; computed only
   // when asked for).
   const double nan = std::numeric_limits<double>::quiet_NaN();
+  const bool report = noise_out || flat_share_out;
   std::vector<double> rms(points.size(), nan), curved_rms;
-  if (noise_out)
+  std::vector<std::uint8_t> flat;
+  if (report) {
     curved_rms.assign(points.size(), nan);
+    flat.assign(points.size(), 0);
+  }
   std::vector<TangentPlane> fitted(points.size());
   parallelFor(points.size(), threads, kPerChunk,
               [&](std::size_t begin, std::size_t end) {
@@ -265,16 +278,21 @@ tangentPlanes(const std::vector<Eigen::Vector3d>& points,
                     sum += std::pow(plane.normal.dot(q - plane.point), 2);
                   const auto n = static_cast<double>(set.size());
                   rms[i] = std::sqrt(sum / n);
-                  if (!noise_out)
+                  if (!report)
                     continue;
                   curved_rms[i] = rms[i];
-                  if (set.size() < kQuadricMinPoints)
-                    continue;
-                  // scaled by sqrt((n - 3) / (n - 6)) to read as the plane's residual
-                  // (the degrees of freedom of 3 and 6 coefficients)
-                  const double quadric = quadricSquares(set, plane);
-                  if (sum > kCurvatureRatio * quadric)
-                    curved_rms[i] = std::sqrt(quadric / n * (n - 3.0) / (n - 6.0));
+                  if (set.size() >= kQuadricMinPoints) {
+                    // scaled by sqrt((n - 3) / (n - 6)) to read as the plane's residual
+                    // (the degrees of freedom of 3 and 6 coefficients)
+                    const double quadric = quadricSquares(set, plane);
+                    if (sum > kCurvatureRatio * quadric)
+                      curved_rms[i] = std::sqrt(quadric / n * (n - 3.0) / (n - 6.0));
+                  }
+                  double spread = 0.0;
+                  for (const Eigen::Vector3d& q : set)
+                    spread += (q - set.front()).norm();
+                  spread /= n - 1.0;
+                  flat[i] = curved_rms[i] <= kFlatResidualShare * spread;
                 }
               });
   const auto median = [](std::vector<double> values) {
@@ -288,6 +306,14 @@ tangentPlanes(const std::vector<Eigen::Vector3d>& points,
     return *middle;
   };
   const double noise = median(std::move(rms));
+  if (flat_share_out) {
+    std::size_t fitted_sets = 0, flat_sets = 0;
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      fitted_sets += !std::isnan(curved_rms[i]);
+      flat_sets += flat[i];
+    }
+    *flat_share_out = fitted_sets == 0 ? 0.0 : double(flat_sets) / double(fitted_sets);
+  }
   if (noise_out)
     *noise_out = median(std::move(curved_rms));
 
