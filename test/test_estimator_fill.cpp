@@ -230,6 +230,68 @@ TEST(EstimatorFill, ANoisySparseCloudGetsACalmerResolutionOrAWarning)
     EXPECT_EQ(w.find("too sparse for the part"), std::string::npos) << w;
 }
 
+TEST(EstimatorFill, NoiseTooStrongForThePartIsCalledNoiseWithOrWithoutNoiseMode)
+{
+  // 10,000 points of a cube with noise of 1 cell at 256: the automatic resolution is
+  // lowered to about 30, where features must lie more than half the cube apart. The
+  // warnings say so and speak of noise, also in noise mode, whose run at the lowered
+  // resolution measures its points again (at cells too coarse to tell noise from
+  // shape): never of sparsity.
+  const syn::CadModel model =
+    syn::rotated(syn::cadModelByName("cube"), syn::randomRotation(13));
+  syn::SamplingOptions options;
+  options.count = 10000;
+  options.seed = 13;
+  options.noise_sigma = model.bounds().sizes().maxCoeff() / 256.0;
+  const Cloud::Ptr cloud = cloudOf(syn::sampleCadModel(model, options));
+  for (const bool noise_mode : {false, true}) {
+    Estimator est;
+    est.setInputCloud(cloud);
+    est.setResolution(0);
+    est.setNoiseMode(noise_mode);
+    Output out;
+    est.compute(out);
+    ASSERT_EQ(est.getErrorMessage(), "");
+    ASSERT_FALSE(est.getWarnings().empty()) << "noise mode " << noise_mode;
+    const std::string& first = est.getWarnings().front();
+    EXPECT_NE(first.find("for the points' noise"), std::string::npos) << first;
+    EXPECT_NE(first.find("expect few features or none"), std::string::npos) << first;
+    for (const std::string& w : est.getWarnings())
+      EXPECT_EQ(w.find("too sparse for the part"), std::string::npos) << w;
+  }
+}
+
+TEST(EstimatorFill, ACleanCloudAtTheFillsLimitIsToldToSampleDenser)
+{
+  // 3,000 noise-free points: the automatic resolution is as fine as the fill supports
+  // (4 cells a point spacing) and the graph of some parts still has gaps. A warning
+  // then says to sample denser, never to raise the resolution.
+  int wrong = 0;
+  for (const char* name : {"u_prism", "icosahedron", "box_with_hole"}) {
+    const syn::CadModel model =
+      syn::rotated(syn::cadModelByName(name), syn::randomRotation(7));
+    Estimator est;
+    est.setInputCloud(sparseCloud(model, 3000, 7));
+    est.setResolution(0);
+    Output out;
+    est.compute(out);
+    ASSERT_EQ(est.getErrorMessage(), "");
+    const auto c = counts(est);
+    const bool exact = c[0] == model.vertices.size() && c[1] == model.curves.size() &&
+                       c[2] == model.faces.size();
+    bool denser = false;
+    for (const std::string& w : est.getWarnings()) {
+      denser = denser || w.find("sample denser") != std::string::npos;
+      EXPECT_EQ(w.find("raise the resolution"), std::string::npos) << name << ": " << w;
+    }
+    if (!exact) {
+      ++wrong;
+      EXPECT_TRUE(denser) << name << ": " << c[0] << "/" << c[1] << "/" << c[2];
+    }
+  }
+  EXPECT_GT(wrong, 0) << "every part exact at 3,000 points: use a sparser cloud here";
+}
+
 TEST(EstimatorFill, ACleanCloudTooSparseForItsPartIsCalledSparseNotNoisy)
 {
   // 1,000 noise-free points of parts whose faces are a few spacings wide: the planes of

@@ -455,7 +455,7 @@ private:
     std::string fill_reason;
     double point_noise = -1.0; // cells: the fill's measure (FillReport::noise), or -1
     double point_flat_share = -1.0; // FillReport::flat_share (kShapeNotNoiseShare)
-    bool calmed = false;            // lowered for the points' noise (calmResolution())
+    bool calmed = false, calmed_for_shape = false; // calmResolution(): noise or spread
     std::vector<std::string> notes;
     std::vector<std::string> warnings;
     PhaseTimes times;

@@ -47,16 +47,35 @@ pointSpreadName(double flat_share)
   return noiseIsShape(flat_share) ? "spread" : "noise";
 }
 
+/** Whether the points' spread is their shape rather than noise: as judged where the
+ * resolution was lowered for it (a lowered run measures its points again, at cells too
+ * coarse to tell), or as measured at this resolution. */
+template <typename Run>
+bool
+spreadIsShape(const Run& run)
+{
+  return run.calmed ? run.calmed_for_shape : noiseIsShape(run.point_flat_share);
+}
+
 /** The advice of a warning that finer cells would help, unless the points are rough
  * (or too sparse for their creases, which reads the same). */
 inline const char*
-roughPointsAdvice(double flat_share)
+roughPointsAdvice(bool shape)
 {
-  return noiseIsShape(flat_share)
-           ? "the points are too sparse for the part (see the warning on their "
-             "spread), and finer cells would not help: follow that warning first"
-           : "the points are rough (see the warning on their noise), and finer "
-             "cells would make that worse: follow that warning first";
+  return shape ? "the points are too sparse for the part (see the warning on their "
+                 "spread), and finer cells would not help: follow that warning first"
+               : "the points are rough (see the warning on their noise), and finer "
+                 "cells would make that worse: follow that warning first";
+}
+
+/** Whether the automatic resolution is as fine as the points support (with the fill
+ * or without), so that finer cells need a denser sample. */
+template <typename Run>
+bool
+atPointsCap(const Run& run)
+{
+  return run.search_cap > 0 && run.resolution.resolution >= run.search_cap &&
+         run.search_cap_reason != kSearchLimitReason;
 }
 
 } // namespace detail
@@ -81,8 +100,7 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::checkResults(const Results& re
     detail::roughPoints(band.roughness(), noise_mode_, run.point_noise) || run.calmed;
   // the automatic resolution is already as fine as the points support: finer cells
   // need more points (or the fill, from the points alone)
-  const bool at_points_cap = run.search_cap > 0 && resolution >= run.search_cap &&
-                             run.search_cap_reason != detail::kSearchLimitReason;
+  const bool at_points_cap = detail::atPointsCap(run);
   const auto denser = [&](std::ostream& out) {
     out << "sample denser: resolution " << resolution << " is "
         << run.search_cap_reason;
@@ -114,10 +132,9 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::checkResults(const Results& re
       << 2 * min_radius << " cells at resolution " << resolution
       << " or the band is broken: ";
     if (rough) {
-      w << detail::roughPointsAdvice(run.point_flat_share);
+      w << detail::roughPointsAdvice(detail::spreadIsShape(run));
     } else if (at_points_cap) {
-      denser(w);
-      w << "; or lower min_radius";
+      denser(w); // (a lower min_radius on points this sparse gives fragments)
     } else {
       w << "raise the resolution";
       if (run.fill == SurfaceFill::kPoints && run.resolution.spacing > 0.0)
@@ -134,7 +151,7 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::checkResults(const Results& re
       << min_radius << " cells of a feature at resolution " << resolution
       << ", so small faces and close edges merge or vanish; ";
     if (rough) {
-      w << detail::roughPointsAdvice(run.point_flat_share);
+      w << detail::roughPointsAdvice(detail::spreadIsShape(run));
     } else if (at_points_cap) {
       denser(w);
     } else {
@@ -214,10 +231,15 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::checkGraph(const Results& resu
   w << "the graph is not that of a closed part: " << gaps.describe()
     << ". Features closer than about " << 2 * min_radius << " cells (2 min_radius) at "
     << "resolution " << run.resolution.resolution
-    << " were not all separated: read the graph as approximate, or raise the "
-       "resolution";
+    << " were not all separated: read the graph as approximate, or ";
+  if (detail::atPointsCap(run))
+    w << "sample denser: resolution " << run.resolution.resolution << " is "
+      << run.search_cap_reason;
+  else
+    w << "raise the resolution";
   if (!mesh_closed_) // a closed mesh has no border
-    w << " (the border of an open scan also leaves edges without their outer corner)";
+    w << " (if the cloud is an open scan, its border also leaves edges without their "
+         "outer corner)";
   run.warnings.push_back(w.str());
 }
 

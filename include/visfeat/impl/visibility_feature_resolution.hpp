@@ -266,14 +266,13 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::searchResolution(
       w << "; ";
       if (run.calmed ||
           detail::roughPoints(results.band.roughness(), noise_mode_, run.point_noise))
-        w << detail::roughPointsAdvice(run.point_flat_share);
+        w << detail::roughPointsAdvice(detail::spreadIsShape(run));
       else if (run.fill == SurfaceFill::kPoints && run.search_cap <= current)
         w << "fill the band between the points (fill 'triangles') so that the "
              "resolution can rise to resolve them, or lower min_radius";
       else if (run.search_cap <= current &&
                run.search_cap_reason != detail::kSearchLimitReason)
-        w << "sample denser so that the resolution can rise to resolve them, or "
-             "lower min_radius";
+        w << "sample denser so that the resolution can rise to resolve them";
       else
         w << "set a finer resolution to resolve them, or lower min_radius";
       run.warnings.push_back(w.str());
@@ -338,18 +337,24 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::calmResolution(
   calm.raised_for_fill = !mesh_; // the band stays filled between the points
   calm.search_cap = calmer;
   calm.calmed = true;
+  calm.calmed_for_shape = shape;
   calm.search_cap_reason =
     "what the points' " + detail::pointSpreadName(run.point_flat_share) + " allows";
   PointCloudOut calm_output = output;
   std::string problem;
   if (std::optional<Results> calm_results = runAt(calm, calmer, calm_output, problem)) {
     calm.times.search_ms += run.times.total() - run.times.shape_ms;
+    const double apart =
+      2.0 * run.segmentation.components.min_radius * calm.grid.cell_size;
     std::ostringstream w;
     w << (shape ? "the points are too sparse for the part: " : "") << "resolution "
       << calmer << " for the points' " << detail::pointSpreadName(run.point_flat_share)
       << " (" << why.str() << "): features closer than about " << std::setprecision(3)
-      << 2.0 * run.segmentation.components.min_radius * calm.grid.cell_size
-      << " (world units) merge and small ones may be lost; "
+      << apart << " (world units) merge and small ones may be lost";
+    if (apart >= 0.5 * run.resolution.extent)
+      w << ", at least half the cloud's extent of " << run.resolution.extent
+        << ": expect few features or none";
+    w << "; "
       << (shape ? "sample denser to resolve them"
                 : "smooth the points (pcl::MovingLeastSquares) or sample denser to "
                   "resolve them");
