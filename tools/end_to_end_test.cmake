@@ -14,8 +14,8 @@
 #                    band filled between them, and the cube's graph
 #   coplanar         a flat square patch -> processed, with a note, as one face
 #   too_sparse       300 points of the U prism (16 corners, 24 creases) -> whatever it
-#                    finds, the tool's output and the graph JSON carry a warning (a
-#                    result that cannot be trusted never comes bare)
+#                    finds, the tool's output (with -q too) and the graph JSON carry
+#                    a warning (a result that cannot be trusted never comes bare)
 
 cmake_minimum_required(VERSION 3.19) # string(JSON); policies NEW (CMP0053)
 
@@ -245,6 +245,16 @@ elseif(CASE STREQUAL "too_sparse")
   expect_output("Warning: ")
   expect_pcd("${out}" "x y z curve_distance face_id visibility_radius label feature_class"
              300)
+  # -q silences all but errors and warnings: the warning still shows
+  run("${VISFEAT}" "${cloud}" "${dir}/quiet.pcd" -q)
+  expect_output("visfeat: warning: ")
+  # a clean cloud too sparse for its part: its spread is its shape, never noise
+  foreach(wrong_cause "noise mode" "-noise_mode" "MovingLeastSquares" "raise the resolution")
+    string(FIND "${run_out}" "${wrong_cause}" found)
+    if(NOT found LESS 0)
+      fail("the warnings of a clean sparse cloud say '${wrong_cause}':\n${run_out}")
+    endif()
+  endforeach()
   if(EXISTS "${graph}")
     read_json(json "${graph}")
     string(JSON warnings ERROR_VARIABLE json_error LENGTH "${json}" warnings)

@@ -432,8 +432,12 @@ printSummary(const Estimator& estimator, const vt::Options& opt)
   print_info(" faces\n");
   // warnings go to stderr: what stdout holds comes first, also when it is a pipe
   std::fflush(stdout);
+  // -q silences the rest, never these: a result that cannot be trusted says so
   for (const std::string& warning : estimator.getWarnings())
-    print_warn("Warning: %s\n", inToolTerms(warning).c_str());
+    if (opt.quiet)
+      std::fprintf(stderr, "visfeat: warning: %s\n", inToolTerms(warning).c_str());
+    else
+      print_warn("Warning: %s\n", inToolTerms(warning).c_str());
 }
 
 int

@@ -186,7 +186,7 @@ printHelp(const char* program)
   print_value("unset");
   print_info("; world units)\n");
   printPictureHelp();
-  print_info("    -q                = quiet: errors only\n");
+  print_info("    -q                = quiet: warnings and errors only\n");
   print_info("  Outputs are written to a temporary file and renamed when complete.\n");
 }
 

@@ -164,12 +164,18 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::checkResults(const Results& re
   if (!noise_mode_ && band.roughness() > kNoisyRoughness) {
     const int calmer = detail::calmerResolution(resolution, band.roughness());
     std::ostringstream r;
-    r << "the points scatter about the surface: roughness "
-      << std::round(1000.0 * band.roughness()) / 1000.0
+    const bool shape = detail::spreadIsShape(run);
+    r << (shape ? "the band is rough" : "the points scatter about the surface")
+      << ": roughness " << std::round(1000.0 * band.roughness()) / 1000.0
       << " cells (RMS distance of the cells' point centroids to local planes; clean "
          "clouds give about 0, and counts break from about 0.15): the result may be "
-         "wrong; use noise mode (setNoiseMode(true)) or a resolution of "
-      << calmer << " or lower";
+         "wrong; ";
+    if (shape)
+      r << "on points this sparse that is their shape, not noise (see the warning on "
+           "their spread): sample denser";
+    else
+      r << "use noise mode (setNoiseMode(true)) or a resolution of " << calmer
+        << " or lower";
     run.warnings.push_back(r.str());
   }
   if (run.point_noise > kNoisyPointNoise) {
