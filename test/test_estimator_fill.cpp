@@ -236,7 +236,7 @@ TEST(EstimatorFill, NoiseTooStrongForThePartIsCalledNoiseWithOrWithoutNoiseMode)
   // lowered to about 30, where features must lie more than half the cube apart. The
   // warnings say so and speak of noise, also in noise mode, whose run at the lowered
   // resolution measures its points again (at cells too coarse to tell noise from
-  // shape): never of sparsity.
+  // shape): never of sparsity, nor of a denser sample (which is as noisy).
   const syn::CadModel model =
     syn::rotated(syn::cadModelByName("cube"), syn::randomRotation(13));
   syn::SamplingOptions options;
@@ -256,8 +256,10 @@ TEST(EstimatorFill, NoiseTooStrongForThePartIsCalledNoiseWithOrWithoutNoiseMode)
     const std::string& first = est.getWarnings().front();
     EXPECT_NE(first.find("for the points' noise"), std::string::npos) << first;
     EXPECT_NE(first.find("expect few features or none"), std::string::npos) << first;
-    for (const std::string& w : est.getWarnings())
+    for (const std::string& w : est.getWarnings()) {
       EXPECT_EQ(w.find("too sparse for the part"), std::string::npos) << w;
+      EXPECT_EQ(w.find("sample denser"), std::string::npos) << w;
+    }
   }
 }
 

@@ -196,8 +196,8 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::checkResults(const Results& re
         << " cells (RMS about the planes fitted to each point's neighbours; clean "
            "clouds give about 0, and counts break from about 0.17): the band filled "
            "between the points is as rough, and the result may be wrong; smooth the "
-           "points first (pcl::MovingLeastSquares), sample denser, or use a "
-           "resolution of "
+           "points first (pcl::MovingLeastSquares; a denser sample is as noisy), or "
+           "use a resolution of "
         << calmer << " or lower with the fill 'triangles' (setSurfaceFill()), where "
         << "features need to lie about " << std::setprecision(3)
         << 2 * min_radius * run.grid.cell_size * resolution / calmer

@@ -356,8 +356,8 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::calmResolution(
         << ": expect few features or none";
     w << "; "
       << (shape ? "sample denser to resolve them"
-                : "smooth the points (pcl::MovingLeastSquares) or sample denser to "
-                  "resolve them");
+                : "smooth the points (pcl::MovingLeastSquares) to resolve them: a "
+                  "denser sample is as noisy");
     calm.warnings.insert(calm.warnings.begin(), w.str());
     output.swap(calm_output);
     run = std::move(calm);
