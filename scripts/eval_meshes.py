@@ -18,7 +18,9 @@ Per mesh:
      cells, infinite beyond). Truth vertices: mesh vertices with 1 or >= 3 sharp
      edges; truth curves: chains of sharp edges between them (closed loops count);
   4. visfeat in.pcd out.pcd -resolution R -graph g.json; the distances below are
-     in its grid's cell_size (g.json);
+     in its grid's cell_size (g.json). With --resolution auto, R is what visfeat
+     chooses for the rotated mesh itself (written as OFF, no option), and the cloud
+     of step 2 is sampled for that R;
   5. visfeat: predicted sharp = feature_class 1 or 2. P = predicted points with
      truth distance <= 2 cells; R = points within 1 cell that are predicted;
   6. PCL: pcl_normal_estimation -k 30; for ~200 quantiles t of the curvature,
@@ -26,7 +28,7 @@ Per mesh:
 
 Run (from the repository root, with a Release build):
   /usr/bin/python3 scripts/eval_meshes.py --out /tmp/eval_meshes \
-      [--meshes fandisk.off cgal_part.off ...] [--resolution 512] \
+      [--meshes fandisk.off cgal_part.off ...] [--resolution 512|auto] \
       [--visfeat build/tools/visfeat] [--threads 2]
 """
 import argparse, json, os, re, subprocess, sys, time
@@ -243,6 +245,25 @@ def best_threshold(curv, near2, near1, nq=200):
     return best
 
 
+def automatic_resolution(V, F, stem, a):
+    """The resolution visfeat chooses for the (rotated) mesh itself, with no option
+    (its automatic choice and search), and the seconds that run took."""
+    with open(stem + "_mesh.off", "w") as f:
+        f.write("OFF\n%d %d 0\n" % (len(V), len(F)))
+        np.savetxt(f, V, fmt="%.17g")
+        np.savetxt(f, np.c_[np.full(len(F), 3), F], fmt="%d")
+    cmd = [a.visfeat, stem + "_mesh.off", stem + "_mesh_out.pcd", "-mesh_points", "100000"] + \
+        (["-threads", str(a.threads)] if a.threads else [])
+    t0 = time.time()
+    res = subprocess.run(cmd, capture_output=True, text=True)
+    if res.returncode:
+        raise RuntimeError("visfeat failed on the mesh %s: %s" % (stem, res.stderr[-2000:]))
+    m = re.search(r"Resolution (\d+) chosen", res.stdout)
+    if not m:
+        raise RuntimeError("no 'Resolution N chosen' in visfeat's output for " + stem)
+    return int(m.group(1)), time.time() - t0
+
+
 def evaluate(name, a):
     rng = np.random.default_rng(a.seed)
     path = os.path.join(MODELS, name)
@@ -253,18 +274,22 @@ def evaluate(name, a):
     if len(V) != nv_raw:
         notes.append("merged %d duplicate vertices" % (nv_raw - len(V)))
     V = V @ random_rotation(rng).T
-    cell = (V.max(0) - V.min(0)).max() / a.resolution
+    stem = os.path.join(a.out, os.path.splitext(name)[0])
+    resolution, auto_s = a.resolution, None
+    if resolution == "auto":
+        resolution, auto_s = automatic_resolution(V, F, stem, a)
+    resolution = int(resolution)
+    cell = (V.max(0) - V.min(0)).max() / resolution
     A, B, C = V[F[:, 0]], V[F[:, 1]], V[F[:, 2]]
     area = 0.5 * np.linalg.norm(np.cross(B - A, C - A), axis=1).sum()
     P = sample(V, F, int(round(a.points_per_cell2 * area / cell ** 2)), rng)
-    stem = os.path.join(a.out, os.path.splitext(name)[0])
     write_pcd(stem + "_in.pcd", P)
     E, nb, nm, mis = sharp_edges(V, F, a.angle)
     if nb or nm or mis:
         notes.append("%d boundary, %d non-manifold, %d mis-oriented edges" % (nb, nm, mis))
     tv, tc = truth_topology(E)
 
-    cmd = [a.visfeat, stem + "_in.pcd", stem + "_out.pcd", "-resolution", str(a.resolution),
+    cmd = [a.visfeat, stem + "_in.pcd", stem + "_out.pcd", "-resolution", str(resolution),
            "-graph", stem + "_g.json"] + (["-threads", str(a.threads)] if a.threads else [])
     t0 = time.time()
     res = subprocess.run(cmd, capture_output=True, text=True)
@@ -290,7 +315,9 @@ def evaluate(name, a):
         raise RuntimeError("pcl_normal_estimation failed: " + res.stderr[-2000:])
     nrm = read_same_points(stem + "_normals.pcd", P, a.out)
     pp, pr, pf1, pt = best_threshold(nrm["curvature"], near2, near1)
-    return dict(mesh=name, R=a.resolution, points=len(P), vef=vef, sharp=len(E), tv=tv, tc=tc,
+    if auto_s is not None:
+        notes.append("resolution %d chosen by visfeat on the rotated mesh in %.1f s" % (resolution, auto_s))
+    return dict(mesh=name, R=resolution, points=len(P), vef=vef, sharp=len(E), tv=tv, tc=tc,
                 P=vp, Rc=vr, F1=vf1, vs=vf_s, pP=pp, pR=pr, pF1=pf1, pt=pt, ps=pcl_s,
                 cell=vcell, ourcell=cell, notes=notes)
 
@@ -298,7 +325,10 @@ def evaluate(name, a):
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--meshes", nargs="+", default=DEFAULT_MESHES)
-    ap.add_argument("--resolution", type=int, default=512)
+    ap.add_argument("--resolution", default="512",
+                    help="cells along the longest side, or 'auto': the resolution visfeat "
+                         "chooses for the rotated mesh (its search included), then the "
+                         "cloud is sampled and run at that resolution")
     ap.add_argument("--points-per-cell2", type=float, default=6.0)
     ap.add_argument("--seed", type=int, default=1)
     ap.add_argument("--angle", type=float, default=30.0, help="dihedral angle of a sharp edge (degrees)")

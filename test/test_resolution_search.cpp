@@ -104,15 +104,22 @@ TEST_P(SteppedBlock, SearchResolvesTheRisers)
            off(run.counts[3], truth.faces.size());
   };
   EXPECT_LT(error(coarse), error(paper));
-  // the search finds them as narrow faces and doubles the resolution
+  // the search finds them as narrow faces and doubles the resolution; where the
+  // graph at 512 still has gaps (a corner not separated), it doubles once more
+  // (kMaxSearchResolution 1024): measured rotation 21 16/24/10 at 1024, 22 16/24/10
+  // at 512, 23 14/22/10 at 512 (a closed graph: two corners merged into one)
   const MeshRun searched = runMesh("stepped_block", GetParam(), 0);
-  EXPECT_EQ(searched.resolution, 512);
   EXPECT_TRUE(mentions(searched.reason, "narrow faces at resolution 256"))
     << searched.reason;
+  if (mentions(searched.reason, "at resolution 512")) {
+    EXPECT_EQ(searched.resolution, 1024) << searched.reason;
+  } else {
+    EXPECT_EQ(searched.resolution, 512) << searched.reason;
+  }
   // every face has its core, and the counts are closer to the truth than at 256; the
-  // corners where a riser's concave crease ends are not all separated yet, and which
-  // ones depends on the grid's offset (measured 14-16 of 16 vertices, 22-24 of 24
-  // edges at 512, against 8 / 17-18 at 256): issue 14
+  // corners where a riser's concave crease ends are not all separated at 512, and
+  // which ones depends on the grid's offset (measured 14-16 of 16 vertices, 22-24 of
+  // 24 edges at 512, against 8 / 17-18 at 256): issue 14
   EXPECT_EQ(searched.counts[3], truth.faces.size());
   std::printf("searched: %zu/%zu/%zu at %d\n", searched.counts[1], searched.counts[2],
               searched.counts[3], searched.resolution);

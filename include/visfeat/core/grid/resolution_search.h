@@ -5,11 +5,13 @@
 namespace visfeat {
 
 /** \brief The automatic resolution's search goes no finer than this (a resolution set
- * with setResolution() may be finer). Measured on 2 cores shared with other work: the
- * public fandisk mesh takes 5 s at 256 and 15-27 s at 512, where its narrow faces are
- * resolved; the CGAL part 102 s and the CGAL pinion 1,133 s at 1024, too slow for a
- * default. */
-constexpr int kMaxSearchResolution = 512;
+ * with setResolution() may be finer). 1024 = kTopologyResolution (256) after
+ * kMaxSearchSteps doublings. Measured 2026-12-05 on 2 cores, meshes with the default
+ * 1,000,000 output points: the public CGAL part, CGAL pinion and ABC 00000050 still
+ * show narrow faces at 512 and at 1024 take 20 s, 61 s (1.1 GiB peak) and 15 s, with
+ * counts 2/5/6, 73/115/43 and 17/83/39 (truth 2/5/5, 80/122/43, 4/32; at 512: 4/14/9,
+ * 46/94/41, 25/66/31). The limit was 512 while the pinion took 1,133 s at 1024. */
+constexpr int kMaxSearchResolution = 1024;
 
 /** \brief Whether the search also goes finer for a closed mesh (meshIsClosed()) whose
  * topology graph is not that of a closed part (findGraphGaps()): edges ending at a
