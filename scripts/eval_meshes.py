@@ -245,6 +245,19 @@ def best_threshold(curv, near2, near1, nq=200):
     return best
 
 
+def thread_options(a):
+    return ["-threads", str(a.threads)] if a.threads else []
+
+
+def resolution_option(text):
+    """--resolution: 'auto' or a positive number of cells."""
+    if text == "auto":
+        return text
+    if not text.isdigit() or int(text) < 1:
+        raise argparse.ArgumentTypeError("expected 'auto' or a positive integer, got " + repr(text))
+    return int(text)
+
+
 def automatic_resolution(V, F, stem, a):
     """The resolution visfeat chooses for the (rotated) mesh itself, with no option
     (its automatic choice and search), and the seconds that run took."""
@@ -253,7 +266,7 @@ def automatic_resolution(V, F, stem, a):
         np.savetxt(f, V, fmt="%.17g")
         np.savetxt(f, np.c_[np.full(len(F), 3), F], fmt="%d")
     cmd = [a.visfeat, stem + "_mesh.off", stem + "_mesh_out.pcd", "-mesh_points", "100000"] + \
-        (["-threads", str(a.threads)] if a.threads else [])
+        thread_options(a)
     t0 = time.time()
     res = subprocess.run(cmd, capture_output=True, text=True)
     if res.returncode:
@@ -278,7 +291,6 @@ def evaluate(name, a):
     resolution, auto_s = a.resolution, None
     if resolution == "auto":
         resolution, auto_s = automatic_resolution(V, F, stem, a)
-    resolution = int(resolution)
     cell = (V.max(0) - V.min(0)).max() / resolution
     A, B, C = V[F[:, 0]], V[F[:, 1]], V[F[:, 2]]
     area = 0.5 * np.linalg.norm(np.cross(B - A, C - A), axis=1).sum()
@@ -290,7 +302,7 @@ def evaluate(name, a):
     tv, tc = truth_topology(E)
 
     cmd = [a.visfeat, stem + "_in.pcd", stem + "_out.pcd", "-resolution", str(resolution),
-           "-graph", stem + "_g.json"] + (["-threads", str(a.threads)] if a.threads else [])
+           "-graph", stem + "_g.json"] + thread_options(a)
     t0 = time.time()
     res = subprocess.run(cmd, capture_output=True, text=True)
     vf_s = time.time() - t0
@@ -325,7 +337,7 @@ def evaluate(name, a):
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--meshes", nargs="+", default=DEFAULT_MESHES)
-    ap.add_argument("--resolution", default="512",
+    ap.add_argument("--resolution", type=resolution_option, default=512,
                     help="cells along the longest side, or 'auto': the resolution visfeat "
                          "chooses for the rotated mesh (its search included), then the "
                          "cloud is sampled and run at that resolution")
