@@ -420,6 +420,45 @@ TEST(EstimatorFill, AMeshGetsTheTopologyResolutionWhateverItsPointsDensity)
   EXPECT_EQ(counts(est), (std::array<std::size_t, 4>{8, 12, 6, 0}));
 }
 
+TEST(EstimatorFill, AMeshAtTheResolutionItsSearchPickedGivesTheSameLabels)
+{
+  // 20,000 points on the cube lie about 2.8 cells apart at 256: the automatic run
+  // measures that and widens the feature points and the crease window by it; a set
+  // resolution on the same grid measured nothing and did not (the CGAL part at 1024:
+  // 3/7/6 automatic, 2/5/6 set)
+  const syn::CadModel model =
+    syn::rotated(syn::cadModelByName("cube"), syn::randomRotation(7));
+  auto mesh = std::make_shared<visfeat::SurfaceMesh>(
+    syn::tessellateCadModel(model, 0.05 * syn::cellSize(model, 256)).mesh);
+  Estimator est;
+  est.setInputCloud(sparseCloud(model, 20000, 7));
+  est.setInputMesh(mesh);
+  Output automatic, set;
+  est.compute(automatic);
+  ASSERT_EQ(est.getErrorMessage(), "");
+  const int picked = est.getResolutionEstimate().resolution;
+  const std::vector<std::string> notes = est.getNotes();
+  est.setResolution(picked);
+  est.compute(set);
+  ASSERT_EQ(est.getErrorMessage(), "");
+  ASSERT_EQ(set.size(), automatic.size());
+  std::size_t differ = 0, features = 0;
+  for (std::size_t i = 0; i < set.size(); ++i) {
+    differ += set[i].feature_class != automatic[i].feature_class;
+    const auto cls = static_cast<visfeat::FeatureClass>(set[i].feature_class);
+    features += cls == visfeat::FeatureClass::kVertex || cls == visfeat::FeatureClass::kEdge;
+  }
+  EXPECT_EQ(differ, 0u) << "of " << set.size() << " points at resolution " << picked;
+  EXPECT_GT(features, 0u);
+  // both say that the points are sparser than the cells, and how many would do
+  EXPECT_EQ(est.getNotes(), notes);
+  const auto sparse = std::find_if(notes.begin(), notes.end(), [](const std::string& n) {
+    return n.find("cells apart at resolution") != std::string::npos;
+  });
+  ASSERT_NE(sparse, notes.end());
+  EXPECT_NE(sparse->find("sample the mesh to about"), std::string::npos) << *sparse;
+}
+
 TEST(EstimatorFill, TheMeshFillNeedsAMesh)
 {
   Estimator est;

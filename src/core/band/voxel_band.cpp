@@ -60,6 +60,7 @@ public:
       , sums_(sums)
       , index_(grid.dims)
   {
+    index_.allocateBricks(coords_);
     for (std::size_t i = 0; i < coords_.size(); ++i)
       index_.insert(coords_[i], static_cast<CellId>(i));
   }
@@ -308,12 +309,18 @@ VoxelBand::finalize(std::vector<CellCoord> coords,
     sortedByKey(grid_, coords.size(), [&](std::size_t i) { return coords[i]; });
   coords_.resize(coords.size());
   point_counts_.resize(coords.size());
-  index_ = CellIndex(grid_.dims);
   for (std::size_t r = 0; r < order.size(); ++r) {
     coords_[r] = coords[order[r]];
     point_counts_[r] = counts[order[r]];
-    index_.insert(coords_[r], static_cast<CellId>(r));
   }
+  index_ = CellIndex(grid_.dims);
+  index_.allocateBricks(coords_);
+  // every brick is allocated: inserts only write their own cell's entry
+  parallelFor(coords_.size(), threads, kCellsPerChunk,
+              [&](std::size_t begin, std::size_t end) {
+                for (std::size_t r = begin; r < end; ++r)
+                  index_.insert(coords_[r], static_cast<CellId>(r));
+              });
   neighbours_.resize(coords_.size());
   parallelFor(coords_.size(), threads, kCellsPerChunk,
               [&](std::size_t begin, std::size_t end) {

@@ -216,6 +216,24 @@ locateContactCreases(const VoxelBand& band,
   const auto isFace = [&](std::uint32_t l) {
     return classOfLabel(classes, l) == FeatureClass::kFace;
   };
+  // Most parts have no two faces touching outside the excluded pairs: then there is
+  // nothing to sample, and the two point indexes below are not built.
+  bool any_contact = false;
+  for (std::size_t c = 0; c < band.size() && !any_contact; ++c) {
+    const std::uint32_t a = cell_labels[c];
+    if (!isFace(a))
+      continue;
+    for (const CellId n : band.neighbours(static_cast<CellId>(c))) {
+      const std::uint32_t b = n == kNoCell ? 0 : cell_labels[static_cast<std::size_t>(n)];
+      if (b != a && isFace(b) &&
+          excluded.count({{std::min(a, b), std::max(a, b)}}) == 0) {
+        any_contact = true;
+        break;
+      }
+    }
+  }
+  if (!any_contact)
+    return creases;
   const FacePointIndex index(points, labels, classes, radius);
   // samples only away from edges and vertices: near them the watershed spills across
   // a crease that has its edge (sparse icosahedra: a second edge along one)

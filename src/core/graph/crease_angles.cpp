@@ -155,6 +155,8 @@ measureFaceContacts(const VoxelBand& band,
       }
     }
   }
+  if (cells_of.empty())
+    return contacts; // no two faces touch: nothing to index (clean parts)
   const FacePointIndex index(points, labels, classes, radius);
   const double clearance = CreaseAngleParameters::kContactClearanceCells * cell;
   const FacePointIndex features(points, labels, classes, clearance, false);

@@ -29,6 +29,18 @@ CellIndex::insert(const CellCoord& c, CellId id)
   cells_[static_cast<std::size_t>(slot) * kBrickCells + offsetInBrick(c)] = id;
 }
 
+void
+CellIndex::allocateBricks(const std::vector<CellCoord>& cells)
+{
+  std::size_t blocks = cells_.size() / kBrickCells;
+  for (const CellCoord& c : cells) {
+    std::int32_t& slot = brick_slot_[brickOf(c)];
+    if (slot < 0)
+      slot = static_cast<std::int32_t>(blocks++);
+  }
+  cells_.resize(blocks * kBrickCells, kNoCell);
+}
+
 std::uint64_t
 CellIndex::memoryBytes() const
 {

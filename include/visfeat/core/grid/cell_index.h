@@ -31,6 +31,13 @@ public:
   /** \brief Map c to id (c must lie inside the grid). */
   void insert(const CellCoord& c, CellId id);
 
+  /** \brief Allocates the bricks of these cells (all inside the grid) at once, before
+   * they are inserted: one allocation instead of a growing block list (the generated
+   * icosahedron at 256 holds about 9,000 bricks, 18 MiB). Ids stay kNoCell until
+   * inserted; finds are unchanged. Inserts into allocated bricks allocate nothing,
+   * so inserts of distinct cells may then run on several threads. */
+  void allocateBricks(const std::vector<CellCoord>& cells);
+
   /** \brief The id of c, or kNoCell when c is outside the grid or not inserted. */
   CellId find(const CellCoord& c) const
   {
