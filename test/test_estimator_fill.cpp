@@ -446,15 +446,17 @@ TEST(EstimatorFill, AMeshAtTheResolutionItsSearchPickedGivesTheSameLabels)
   for (std::size_t i = 0; i < set.size(); ++i) {
     differ += set[i].feature_class != automatic[i].feature_class;
     const auto cls = static_cast<visfeat::FeatureClass>(set[i].feature_class);
-    features += cls == visfeat::FeatureClass::kVertex || cls == visfeat::FeatureClass::kEdge;
+    features +=
+      cls == visfeat::FeatureClass::kVertex || cls == visfeat::FeatureClass::kEdge;
   }
   EXPECT_EQ(differ, 0u) << "of " << set.size() << " points at resolution " << picked;
   EXPECT_GT(features, 0u);
   // both say that the points are sparser than the cells, and how many would do
   EXPECT_EQ(est.getNotes(), notes);
-  const auto sparse = std::find_if(notes.begin(), notes.end(), [](const std::string& n) {
-    return n.find("cells apart at resolution") != std::string::npos;
-  });
+  const auto sparse =
+    std::find_if(notes.begin(), notes.end(), [](const std::string& n) {
+      return n.find("cells apart at resolution") != std::string::npos;
+    });
   ASSERT_NE(sparse, notes.end());
   EXPECT_NE(sparse->find("sample the mesh to about"), std::string::npos) << *sparse;
 }

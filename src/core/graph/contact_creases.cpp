@@ -224,7 +224,8 @@ locateContactCreases(const VoxelBand& band,
     if (!isFace(a))
       continue;
     for (const CellId n : band.neighbours(static_cast<CellId>(c))) {
-      const std::uint32_t b = n == kNoCell ? 0 : cell_labels[static_cast<std::size_t>(n)];
+      const std::uint32_t b =
+        n == kNoCell ? 0 : cell_labels[static_cast<std::size_t>(n)];
       if (b != a && isFace(b) &&
           excluded.count({{std::min(a, b), std::max(a, b)}}) == 0) {
         any_contact = true;

@@ -157,15 +157,27 @@ TileWorker::runBatch(const CellId* first, int count)
       const std::uint8_t known = known_[yi];
       if (m == 0 || (known != kUnknownRadius && known >= k))
         continue; // y sees its ring k, every source of m among it
+      // look up every source's offset and prefetch its checks first, then test: the
+      // table loads of the tests overlap instead of waiting one after another
       const Coord& to = coord_[yi];
+      int n = 0;
       for (; m != 0; m &= m - 1) {
         const int j = __builtin_ctzll(m);
-        const auto s = static_cast<std::size_t>(source[static_cast<std::size_t>(j)]);
-        const Coord& from = coord_[s];
+        const Coord& from =
+          coord_[static_cast<std::size_t>(source[static_cast<std::size_t>(j)])];
+        const std::size_t at = table_.offsetIndex(
+          Eigen::Vector3i(to.x - from.x, to.y - from.y, to.z - from.z));
+        table_.prefetch(at, parameters_.opacity);
+        pending_[static_cast<std::size_t>(n)] = {j, at};
+        ++n;
+      }
+      for (int i = 0; i < n; ++i) {
+        const auto [j, at] = pending_[static_cast<std::size_t>(i)];
         ++tests_;
-        if (!table_.sees(window_, window_index_[s],
-                         Eigen::Vector3i(to.x - from.x, to.y - from.y, to.z - from.z),
-                         parameters_.opacity)) {
+        if (!table_.seesAt(window_,
+                           window_index_[static_cast<std::size_t>(
+                             source[static_cast<std::size_t>(j)])],
+                           at, parameters_.opacity)) {
           radius[static_cast<std::size_t>(j)] = k - 1;
           active &= ~(std::uint64_t{1} << j);
         }

@@ -8,6 +8,7 @@
 
 #include <array>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace visfeat {
@@ -82,6 +83,8 @@ private:
   // bit-parallel BFS state, one bit a source of the batch
   std::vector<std::uint64_t> visited_, ring_bits_, next_bits_;
   std::vector<std::int32_t> ring_, next_;
+  // the tests of one target: source bit and table offset index
+  std::array<std::pair<int, std::size_t>, 64> pending_{};
   std::uint64_t tests_ = 0;
 };
 

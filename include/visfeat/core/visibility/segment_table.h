@@ -60,7 +60,29 @@ public:
             const Eigen::Vector3i& d,
             double opacity) const
   {
-    const std::size_t at = spanIndex(d);
+    return seesAt(window, source, offsetIndex(d), opacity);
+  }
+
+  /** \brief The table's index of offset d (|d|_1 <= maxDistance()), for seesAt. */
+  std::size_t offsetIndex(const Eigen::Vector3i& d) const { return spanIndex(d); }
+
+  /** \brief Asks the cache for the first checks of offset index `at` (a hint only):
+   * the map looks up the offsets of all sources of a target, prefetches, then tests,
+   * so the table's loads of several tests overlap. */
+  void prefetch(std::size_t at, double opacity) const
+  {
+    if (opacity <= 0.0)
+      __builtin_prefetch(checks_.data() + check_spans_[at].begin);
+    else
+      __builtin_prefetch(stretches_.data() + stretch_spans_[at].begin);
+  }
+
+  /** \brief sees() for the offset of index `at` = offsetIndex(d). */
+  bool seesAt(const FreeSpaceWindow& window,
+              std::int32_t source,
+              std::size_t at,
+              double opacity) const
+  {
     const std::uint8_t* cells = window.cells() + source;
     if (opacity <= 0.0) {
       const CheckSpan& span = check_spans_[at];
