@@ -53,6 +53,14 @@ sparseCloud(const syn::CadModel& model, std::size_t count, std::uint64_t seed)
   return cloudOf(samplesOf(model, count, seed));
 }
 
+/** The model's mesh, tessellated to 0.05 cells at this resolution. */
+std::shared_ptr<visfeat::SurfaceMesh>
+meshOf(const syn::CadModel& model, int resolution)
+{
+  return std::make_shared<visfeat::SurfaceMesh>(
+    syn::tessellateCadModel(model, 0.05 * syn::cellSize(model, resolution)).mesh);
+}
+
 std::array<std::size_t, 4>
 counts(const Estimator& est)
 {
@@ -361,9 +369,7 @@ TEST(EstimatorFill, AMeshIsRasterisedDirectly)
 {
   const syn::CadModel model =
     syn::rotated(syn::cadModelByName("triangular_prism"), syn::randomRotation(5));
-  const double cell = syn::cellSize(model, 128);
-  auto mesh = std::make_shared<visfeat::SurfaceMesh>(
-    syn::tessellateCadModel(model, 0.05 * cell).mesh);
+  auto mesh = meshOf(model, 128);
   Estimator est;
   // a few points for the output; the band comes from the mesh alone
   est.setInputCloud(sparseCloud(model, 3000, 5));
@@ -394,8 +400,7 @@ TEST(EstimatorFill, AMeshGetsTheTopologyResolutionWhateverItsPointsDensity)
   // the mesh's band does not need them, and the topology needs 256
   const syn::CadModel model =
     syn::rotated(syn::cadModelByName("cube"), syn::randomRotation(6));
-  auto mesh = std::make_shared<visfeat::SurfaceMesh>(
-    syn::tessellateCadModel(model, 0.05 * syn::cellSize(model, 256)).mesh);
+  auto mesh = meshOf(model, 256);
   Estimator est;
   est.setInputCloud(sparseCloud(model, 1000000, 6));
   est.setInputMesh(mesh);
@@ -428,8 +433,7 @@ TEST(EstimatorFill, AMeshAtTheResolutionItsSearchPickedGivesTheSameLabels)
   // 3/7/6 automatic, 2/5/6 set)
   const syn::CadModel model =
     syn::rotated(syn::cadModelByName("cube"), syn::randomRotation(7));
-  auto mesh = std::make_shared<visfeat::SurfaceMesh>(
-    syn::tessellateCadModel(model, 0.05 * syn::cellSize(model, 256)).mesh);
+  auto mesh = meshOf(model, 256);
   Estimator est;
   est.setInputCloud(sparseCloud(model, 20000, 7));
   est.setInputMesh(mesh);

@@ -216,22 +216,23 @@ locateContactCreases(const VoxelBand& band,
   const auto isFace = [&](std::uint32_t l) {
     return classOfLabel(classes, l) == FeatureClass::kFace;
   };
+  // the face pair {min, max} of face label a and neighbour n when they are a contact
+  // outside `excluded`; {0, 0} otherwise (labels of faces are >= 1)
+  const auto contactPair = [&](std::uint32_t a, CellId n) {
+    const std::uint32_t b = n == kNoCell ? 0 : cell_labels[static_cast<std::size_t>(n)];
+    const std::array<std::uint32_t, 2> pair{{std::min(a, b), std::max(a, b)}};
+    return b == a || !isFace(b) || excluded.count(pair) != 0
+             ? std::array<std::uint32_t, 2>{}
+             : pair;
+  };
   // Most parts have no two faces touching outside the excluded pairs: then there is
   // nothing to sample, and the two point indexes below are not built.
   bool any_contact = false;
   for (std::size_t c = 0; c < band.size() && !any_contact; ++c) {
     const std::uint32_t a = cell_labels[c];
-    if (!isFace(a))
-      continue;
-    for (const CellId n : band.neighbours(static_cast<CellId>(c))) {
-      const std::uint32_t b =
-        n == kNoCell ? 0 : cell_labels[static_cast<std::size_t>(n)];
-      if (b != a && isFace(b) &&
-          excluded.count({{std::min(a, b), std::max(a, b)}}) == 0) {
-        any_contact = true;
-        break;
-      }
-    }
+    if (isFace(a))
+      for (const CellId n : band.neighbours(static_cast<CellId>(c)))
+        any_contact = any_contact || contactPair(a, n)[0] != 0;
   }
   if (!any_contact)
     return creases;
@@ -268,13 +269,10 @@ locateContactCreases(const VoxelBand& band,
         if (!isFace(a))
           continue;
         for (const CellId n : band.neighbours(static_cast<CellId>(c))) {
-          const std::uint32_t b =
-            n == kNoCell ? 0 : cell_labels[static_cast<std::size_t>(n)];
-          if (b == a || !isFace(b))
+          const std::array<std::uint32_t, 2> pair = contactPair(a, n);
+          if (pair[0] == 0)
             continue;
-          const std::array<std::uint32_t, 2> pair{{std::min(a, b), std::max(a, b)}};
-          if (excluded.count(pair) != 0)
-            continue;
+          const std::uint32_t b = pair[0] == a ? pair[1] : pair[0];
           const CellCoord at_cell = band.coord(static_cast<CellId>(c));
           const Eigen::Vector3d at = grid.cellCenter(at_cell);
           if (features.anyWithin(at, clearance))
