@@ -249,7 +249,7 @@ public:
    * one face, and corners that no longer end two different creases stop being
    * vertices (shallowCreaseMerge()). Each edge's measured turn is in the graph
    * (GraphNode::crease_angle). Default CreaseAngleParameters::kDefaultMinCreaseAngle
-   * (20 degrees, as CGAL's detect_sharp_edges), 0 = off; range
+   * (20 degrees, why: CreaseAngleParameters), 0 = off; range
    * CreaseAngleParameters::kMinCreaseAngleRange ([0, 180] degrees). Applies to complete
    * regions (the default segmentation); raw components are neither measured nor
    * merged. */
