@@ -33,9 +33,9 @@ TileWorker::estimateBytes(int window_bricks, std::uint64_t cells)
   const std::uint64_t window_cells = side * side * side;
   const std::uint64_t local = std::min(cells, window_cells);
   // window bytes and local_of_; per local cell: index, coord, adjacency, known, three
-  // bit words, two ring entries
+  // bit words, two ring entries, batch slot
   return window_cells * (1 + sizeof(std::int32_t)) +
-         local * (4 + sizeof(Coord) + 24 + 1 + 24 + 8);
+         local * (4 + sizeof(Coord) + 24 + 1 + 24 + 8 + 1);
 }
 
 void
@@ -94,6 +94,7 @@ TileWorker::load(std::size_t t)
     }
   }
   visited_.assign(n, 0);
+  slot_.assign(n, -1);
   ring_bits_.assign(n, 0);
   next_bits_.assign(n, 0);
 }
@@ -122,6 +123,8 @@ TileWorker::runBatch(const CellId* first, int count)
     const std::int32_t l =
       local_of_[static_cast<std::size_t>(window_.cellIndex(band_.coord(first[j])))];
     source[static_cast<std::size_t>(j)] = l;
+    slot_[static_cast<std::size_t>(l)] = static_cast<std::int8_t>(j);
+    sees_[static_cast<std::size_t>(j)] = hidden_[static_cast<std::size_t>(j)] = 0;
     radius[static_cast<std::size_t>(j)] = max_radius;
     const std::uint64_t bit = std::uint64_t{1} << j;
     visited_[static_cast<std::size_t>(l)] |= bit;
@@ -157,6 +160,16 @@ TileWorker::runBatch(const CellId* first, int count)
       const std::uint8_t known = known_[yi];
       if (m == 0 || (known != kUnknownRadius && known >= k))
         continue; // y sees its ring k, every source of m among it
+      const int t = slot_[yi];
+      if (t >= 0) {
+        // y is source t of this batch: the pairs t already tested need no test
+        const auto ti = static_cast<std::size_t>(t);
+        const std::uint64_t hidden = m & hidden_[ti];
+        for (std::uint64_t h = hidden; h != 0; h &= h - 1)
+          radius[static_cast<std::size_t>(__builtin_ctzll(h))] = k - 1;
+        active &= ~hidden;
+        m &= ~(hidden | sees_[ti]);
+      }
       // look up every source's offset and prefetch its checks first, then test: the
       // table loads of the tests overlap instead of waiting one after another
       const Coord& to = coord_[yi];
@@ -174,13 +187,17 @@ TileWorker::runBatch(const CellId* first, int count)
       for (int i = 0; i < n; ++i) {
         const auto [j, at] = pending_[static_cast<std::size_t>(i)];
         ++tests_;
-        if (!table_.seesAt(window_,
-                           window_index_[static_cast<std::size_t>(
-                             source[static_cast<std::size_t>(j)])],
-                           at, parameters_.opacity)) {
+        const bool seen = table_.seesAt(
+          window_,
+          window_index_[static_cast<std::size_t>(source[static_cast<std::size_t>(j)])],
+          at, parameters_.opacity);
+        if (!seen) {
           radius[static_cast<std::size_t>(j)] = k - 1;
           active &= ~(std::uint64_t{1} << j);
         }
+        if (t >= 0) // source t gets the result when its ring k reaches source j
+          (seen ? sees_ : hidden_)[static_cast<std::size_t>(j)] |= std::uint64_t{1}
+                                                                   << t;
       }
     }
     ring_.swap(next_);
@@ -191,6 +208,7 @@ TileWorker::runBatch(const CellId* first, int count)
     ring_bits_[static_cast<std::size_t>(x)] = 0;
 
   for (int j = 0; j < count; ++j) {
+    slot_[static_cast<std::size_t>(source[static_cast<std::size_t>(j)])] = -1;
     const auto r = static_cast<std::uint8_t>(radius[static_cast<std::size_t>(j)]);
     known_[static_cast<std::size_t>(source[static_cast<std::size_t>(j)])] = r;
     __atomic_store_n(radii_ + first[j], r, __ATOMIC_RELAXED);

@@ -23,6 +23,10 @@ namespace detail {
  * one sweep over a cell serves them all. Each source then tests the cells of its ring
  * k as in VisibilityMap, and drops out at its first hidden cell.
  *
+ * Pairs within a batch: a source s is a ring-k cell of another source t exactly when
+ * t is one of s (BFS distance is symmetric), and the test is symmetric too, so the
+ * pair is tested once and its result given to both.
+ *
  * Known radii: visibility and BFS distance are both symmetric, so a cell a with radius
  * r_a sees every cell of its rings 1..r_a; a target at ring k <= r_a of a source is
  * then visible from it without a test. Radii computed by any thread are used when they
@@ -85,6 +89,10 @@ private:
   std::vector<std::int32_t> ring_, next_;
   // the tests of one target: source bit and table offset index
   std::array<std::pair<int, std::size_t>, 64> pending_{};
+  // pairs of sources of the batch already tested: slot of a local cell in the batch
+  // (-1: not a source), and per source the bits of the sources it sees / does not see
+  std::vector<std::int8_t> slot_;
+  std::array<std::uint64_t, 64> sees_{}, hidden_{};
   std::uint64_t tests_ = 0;
 };
 
