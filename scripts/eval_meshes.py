@@ -264,11 +264,10 @@ def mesh_parts(V, F):
     return part, int(part.max()) + 1
 
 
-def near_two_parts(V, F, X, cell, rng, reach=2):
+def near_two_parts(V, F, part, nparts, X, cell, rng, reach=2):
     """Whether each point of X lies within `reach` cells (a box of voxels) of the
-    surfaces of two different parts: each part sampled at 3 points a cell squared,
-    the voxels it touches marked with its bit."""
-    part, nparts = mesh_parts(V, F)
+    surfaces of two different parts (part, nparts: mesh_parts): each part sampled at 3
+    points a cell squared, the voxels it touches marked with its bit."""
     lo = np.minimum(V.min(0), X.min(0)) - (reach + 2) * cell
     side = int(np.ceil((np.maximum(V.max(0), X.max(0)) - lo).max() / cell)) + reach + 3
 
@@ -314,10 +313,11 @@ def analyse(V, F, P, pred, d, curvature, cell, angle, rng, sample_size=1_000_000
     shallow = seg_distance(P[fp], V[E[:, 0]], V[E[:, 1]], 3 * cell) / cell <= 2
     lines.append("false positives: %d, of them %d within 2 cells of an edge of %g-%g degrees"
                  % (fp.sum(), shallow.sum(), angle - 10, angle))
-    if mesh_parts(V, F)[1] < 2:
+    part, nparts = mesh_parts(V, F)
+    if nparts < 2:
         return lines
     take = np.sort(rng.choice(len(P), min(sample_size, len(P)), replace=False))
-    contact = near_two_parts(V, F, P[take], cell, rng)
+    contact = near_two_parts(V, F, part, nparts, P[take], cell, rng)
     lines.append("%.3f of the sampled false positives and %.3f of the sampled points lie "
                  "within 2 cells of two parts" % (contact[fp[take]].mean(), contact.mean()))
     away = ~contact
@@ -329,7 +329,7 @@ def analyse(V, F, P, pred, d, curvature, cell, angle, rng, sample_size=1_000_000
     return lines
 
 
-def thread_options(a):
+def run_options(a):
     """-threads, and the --visfeat-option words, for every visfeat run."""
     return (["-threads", str(a.threads)] if a.threads else []) + \
         [w for o in a.visfeat_option for w in o.split()]
@@ -352,7 +352,7 @@ def automatic_resolution(V, F, stem, a):
         np.savetxt(f, V, fmt="%.17g")
         np.savetxt(f, np.c_[np.full(len(F), 3), F], fmt="%d")
     cmd = [a.visfeat, stem + "_mesh.off", stem + "_mesh_out.pcd", "-mesh_points", "100000"] + \
-        thread_options(a)
+        run_options(a)
     t0 = time.time()
     res = subprocess.run(cmd, capture_output=True, text=True)
     if res.returncode:
@@ -388,7 +388,7 @@ def evaluate(name, a):
     tv, tc = truth_topology(E)
 
     cmd = [a.visfeat, stem + "_in.pcd", stem + "_out.pcd", "-resolution", str(resolution),
-           "-graph", stem + "_g.json"] + thread_options(a)
+           "-graph", stem + "_g.json"] + run_options(a)
     t0 = time.time()
     res = subprocess.run(cmd, capture_output=True, text=True)
     vf_s = time.time() - t0
