@@ -293,7 +293,7 @@ public:
 
   /** \brief Where the band's cells come from (SurfaceFill; default kAuto: the input
    * mesh when one is set, an organized cloud's pixel grid, the triangles between the
-   * points when the cloud has fewer than about one point per cell length, else the
+   * points when they lie more than kFillSpacingCells (0.55) cells apart, else the
    * points). */
   inline void setSurfaceFill(SurfaceFill fill) { surface_fill_ = fill; }
   inline SurfaceFill getSurfaceFill() const { return surface_fill_; }
@@ -491,6 +491,9 @@ private:
   void chooseFill(Run& run) const;
   /** Sets run.point_noise where the fill measures it. */
   std::vector<CellCoord> fillCells(Run& run, const PointCloudIn& surface) const;
+  /** True where a points band has holes and the spacing, measured now, asks for the
+   * fill (kSpacingCheckRepairShare): run's fill is then changed, to be built again. */
+  bool refillSparseBand(Run& run, const VoxelBand& band) const;
   void checkResults(const Results& results, Run& run) const;
   /** A warning where the graph is not that of a closed part (findGraphGaps()). */
   void checkGraph(const Results& results, Run& run) const;

@@ -38,6 +38,18 @@ oneLine(std::string message)
   return message;
 }
 
+/** \brief Copies what a spacing estimate measured (spacing, k, copies) into `run`'s
+ * estimate, whose resolution and reason stay. */
+inline void
+takeSpacing(const ResolutionEstimate& density, ResolutionEstimate& run)
+{
+  run.spacing = density.spacing;
+  run.k = density.k;
+  run.copies = density.copies;
+  run.copy_radius = density.copy_radius;
+  run.queries = density.queries;
+}
+
 /** \brief The resolution at which a roughness (or noise) of `cells` cells at
  * `resolution` becomes kCalmRoughness: both are lengths, so they scale together (at
  * least GridSpec::kMinResolution). */
@@ -197,6 +209,35 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::fillCells(
   default:
     return {};
   }
+}
+
+template <typename PointInT, typename PointOutT>
+bool
+VisibilityFeatureEstimation<PointInT, PointOutT>::refillSparseBand(
+  Run& run, const VoxelBand& band) const
+{
+  // Only the automatic fill of a cloud whose spacing chooseResolution() skipped (a set
+  // resolution and kFillCheckPointsPerCell2 points per cell^2 or more).
+  if (run.fill != SurfaceFill::kPoints || surface_fill_ != SurfaceFill::kAuto ||
+      run.resolution.spacing > 0.0 || band.empty() ||
+      !(double(band.repairCellCount()) >
+        kSpacingCheckRepairShare * double(band.size())))
+    return false;
+  ResolutionEstimate density;
+  try {
+    density = estimateResolution(*surface_, run.resolution.extent);
+  } catch (const Error&) {
+    return false; // no spacing (e.g. mostly duplicates): the points band stays
+  }
+  detail::takeSpacing(density, run.resolution);
+  chooseFill(run);
+  if (run.fill == SurfaceFill::kPoints)
+    return false;
+  std::ostringstream why;
+  why << "; measured as the cells of the points left holes (" << band.repairCellCount()
+      << " of " << band.size() << " cells added by the repair)";
+  run.fill_reason += why.str();
+  return true;
 }
 
 template <typename PointInT, typename PointOutT>
@@ -373,6 +414,9 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::computeResults(
   } else {
     results.band =
       buildVoxelBand(*surface, run.grid, band_options, fillCells(run, *surface));
+    if (refillSparseBand(run, results.band))
+      results.band =
+        buildVoxelBand(*surface, run.grid, band_options, fillCells(run, *surface));
   }
   run.times.band_ms = detail::millisecondsSince(start);
 

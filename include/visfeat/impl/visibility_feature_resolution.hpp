@@ -68,12 +68,7 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::chooseResolution(
     if (surface_fill_ != SurfaceFill::kPoints && hasExtent(shape) &&
         static_cast<double>(surface_->size()) <
           kFillCheckPointsPerCell2 * double(resolution_) * double(resolution_)) {
-      const ResolutionEstimate density = estimateResolution(*surface_, shape.extent);
-      run.resolution.spacing = density.spacing;
-      run.resolution.k = density.k;
-      run.resolution.copies = density.copies;
-      run.resolution.copy_radius = density.copy_radius;
-      run.resolution.queries = density.queries;
+      detail::takeSpacing(estimateResolution(*surface_, shape.extent), run.resolution);
     }
     return resolution_;
   }
@@ -167,10 +162,13 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::chooseFill(Run& run) const
   } else if (run.raised_for_fill ||
              (run.resolution.spacing > 0.0 && spacing_cells > kFillSpacingCells)) {
     run.fill = SurfaceFill::kLocalTriangles;
-    reason << "point spacing " << spacing_cells << " cells, "
-           << (run.raised_for_fill ? "the resolution was raised beyond the points"
-                                   : "fewer than one point a cell length")
-           << ": the band is filled between neighbouring points";
+    reason << "point spacing " << spacing_cells << " cells, ";
+    if (run.raised_for_fill)
+      reason << "the resolution was raised beyond the points";
+    else
+      reason << "above " << kFillSpacingCells
+             << " (the cells of the points would leave holes)";
+    reason << ": the band is filled between neighbouring points";
   } else {
     run.fill = SurfaceFill::kPoints;
     reason << "the cells of the points";
