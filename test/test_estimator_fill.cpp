@@ -190,59 +190,6 @@ TEST(EstimatorFill, APointsOnlyBandOfASparseCloudWarns)
     EXPECT_EQ(w.find("holes"), std::string::npos) << w;
 }
 
-TEST(EstimatorFill, ASetResolutionFinerThanThePointsFillsTheBand)
-{
-  // A cube at a set resolution of 128 with its points 0.7 and 0.9 cells apart: their
-  // cells leave holes (the points band gives 2/12/6, 4/15/6 and 6/11/6 for 8/12/6 at
-  // 0.7, seeds 1-3 of visfeat_generate). At 0.7 (4.4 points per cell^2) the spacing is
-  // measured only once the points band shows its holes; at 0.9 before the band.
-  const int resolution = 128;
-  for (const double spacing : {0.7, 0.9}) {
-    for (const std::uint64_t seed : {1u, 2u, 3u}) {
-      if (spacing == 0.9 && seed > 1)
-        break;
-      const syn::CadModel model =
-        syn::rotated(syn::cadModelByName("cube"), syn::randomRotation(seed));
-      Estimator est;
-      est.setInputCloud(
-        sparseCloud(model, syn::samplesForSpacing(model, resolution, spacing), seed));
-      est.setResolution(resolution);
-      Output out;
-      est.compute(out);
-      ASSERT_EQ(est.getErrorMessage(), "");
-      const std::string where = "spacing " + std::to_string(spacing) + " seed " +
-                                std::to_string(seed) + ": " +
-                                est.getSurfaceFillReason();
-      EXPECT_EQ(est.getSurfaceFillUsed(), visfeat::SurfaceFill::kLocalTriangles)
-        << where;
-      EXPECT_NEAR(est.getResolutionEstimate().spacing / est.getGrid().cell_size,
-                  spacing, 0.05)
-        << where;
-      EXPECT_EQ(est.getSurfaceFillReason().find("left holes") != std::string::npos,
-                spacing == 0.7)
-        << where;
-      EXPECT_EQ(counts(est), (std::array<std::size_t, 4>{8, 12, 6, 0})) << where;
-      EXPECT_TRUE(est.getWarnings().empty())
-        << where << "; " << est.getWarnings().front();
-    }
-  }
-  // Half a cell apart, as the automatic resolution puts them: the band of the points,
-  // and no k-d tree for the spacing.
-  const syn::CadModel model =
-    syn::rotated(syn::cadModelByName("cube"), syn::randomRotation(1));
-  Estimator est;
-  est.setInputCloud(
-    sparseCloud(model, syn::samplesForSpacing(model, resolution, 0.5), 1));
-  est.setResolution(resolution);
-  Output out;
-  est.compute(out);
-  ASSERT_EQ(est.getErrorMessage(), "");
-  EXPECT_EQ(est.getSurfaceFillUsed(), visfeat::SurfaceFill::kPoints)
-    << est.getSurfaceFillReason();
-  EXPECT_EQ(est.getResolutionEstimate().spacing, 0.0);
-  EXPECT_EQ(counts(est), (std::array<std::size_t, 4>{8, 12, 6, 0}));
-}
-
 TEST(EstimatorFill, ANoisySparseCloudGetsACalmerResolutionOrAWarning)
 {
   // 10,000 points of a cube with Gaussian noise of 0.4 cells at 256 (counts break

@@ -154,8 +154,9 @@ printHelp(const char* program)
     "                        cells), grid (an organized cloud's pixel grid, cut at\n"
     "                        depth jumps), mesh (the input mesh's triangles), auto\n"
     "                        (default: mesh for a mesh, grid for an organized\n"
-    "                        cloud, triangles below one point a cell length, else\n"
-    "                        points)\n");
+    "                        cloud, triangles where the points lie over %g\n"
+    "                        cells apart or their cells leave holes, else points)\n",
+    visfeat::kFillSpacingCells);
   print_info("    -fill_neighbours K = neighbours a point's triangles join (default: ");
   print_value("%d", visfeat::LocalTriangleParameters{}.neighbours);
   print_info(")\n");

@@ -491,8 +491,8 @@ private:
   void chooseFill(Run& run) const;
   /** Sets run.point_noise where the fill measures it. */
   std::vector<CellCoord> fillCells(Run& run, const PointCloudIn& surface) const;
-  /** True where a points band has holes and the spacing, measured now, asks for the
-   * fill (kSpacingCheckRepairShare): run's fill is then changed, to be built again. */
+  /** True where an automatic points band has holes that ask for the fill
+   * (kSpacingCheckRepairShare, kUnevenRepairShare): run's fill is changed, to build. */
   bool refillSparseBand(Run& run, const VoxelBand& band) const;
   void checkResults(const Results& results, Run& run) const;
   /** A warning where the graph is not that of a closed part (findGraphGaps()). */

@@ -216,28 +216,43 @@ bool
 VisibilityFeatureEstimation<PointInT, PointOutT>::refillSparseBand(
   Run& run, const VoxelBand& band) const
 {
-  // Only the automatic fill of a cloud whose spacing chooseResolution() skipped (a set
-  // resolution and kFillCheckPointsPerCell2 points per cell^2 or more).
+  // Only the automatic choice of the points band, and only where it has holes.
   if (run.fill != SurfaceFill::kPoints || surface_fill_ != SurfaceFill::kAuto ||
-      run.resolution.spacing > 0.0 || band.empty() ||
-      !(double(band.repairCellCount()) >
-        kSpacingCheckRepairShare * double(band.size())))
+      band.empty())
     return false;
-  ResolutionEstimate density;
-  try {
-    density = estimateResolution(*surface_, run.resolution.extent);
-  } catch (const Error&) {
-    return false; // no spacing (e.g. mostly duplicates): the points band stays
-  }
-  detail::takeSpacing(density, run.resolution);
-  chooseFill(run);
-  if (run.fill == SurfaceFill::kPoints)
-    return false;
+  const double repair_share = double(band.repairCellCount()) / double(band.size());
   std::ostringstream why;
-  why << "; measured as the cells of the points left holes (" << band.repairCellCount()
-      << " of " << band.size() << " cells added by the repair)";
-  run.fill_reason += why.str();
-  return true;
+  why << " (" << band.repairCellCount() << " of " << band.size()
+      << " cells added by the repair)";
+  // A set resolution with kFillCheckPointsPerCell2 points per cell^2 or more: the
+  // spacing was not measured before the band.
+  if (!(run.resolution.spacing > 0.0) && repair_share > kSpacingCheckRepairShare) {
+    try {
+      detail::takeSpacing(estimateResolution(*surface_, run.resolution.extent),
+                          run.resolution);
+    } catch (const Error&) {
+      return false; // no spacing (e.g. mostly duplicates): the points band stays
+    }
+    chooseFill(run);
+    if (run.fill != SurfaceFill::kPoints) {
+      run.fill_reason += "; measured as the cells of the points left holes" + why.str();
+      return true;
+    }
+  }
+  // Dense enough by the median spacing, yet full of holes: the density is uneven, and
+  // the sparser parts lie farther apart than the cells (kUnevenRepairShare).
+  if (repair_share > kUnevenRepairShare) {
+    std::ostringstream reason;
+    reason << "the cells of the points left holes" << why.str()
+           << " although the median point spacing is "
+           << run.resolution.spacing / run.grid.cell_size
+           << " cells: the density is uneven, so the band is filled between "
+              "neighbouring points";
+    run.fill = SurfaceFill::kLocalTriangles;
+    run.fill_reason = reason.str();
+    return true;
+  }
+  return false;
 }
 
 template <typename PointInT, typename PointOutT>

@@ -1,0 +1,139 @@
+// The estimator's automatic fill where the cells of the points leave holes: points
+// farther apart than kFillSpacingCells at a set resolution (measured before the band,
+// or once the points band shows its holes), and an uneven density whose median
+// spacing looks dense enough.
+
+#include <support/cad_models.h>
+#include <visfeat/point_types.h>
+#include <visfeat/surface_fill.h>
+#include <visfeat/visibility_feature_estimation.h>
+
+#include <gtest/gtest.h>
+
+#include <pcl/point_cloud.h>
+#include <pcl/point_types.h>
+
+#include <array>
+#include <memory>
+#include <string>
+
+namespace {
+
+namespace syn = visfeat::synthetic;
+using Estimator =
+  visfeat::VisibilityFeatureEstimation<pcl::PointXYZ, visfeat::PointVisibility>;
+using Cloud = pcl::PointCloud<pcl::PointXYZ>;
+using Output = pcl::PointCloud<visfeat::PointVisibility>;
+
+Cloud::Ptr
+cloudOf(const syn::CadSamples& samples)
+{
+  auto cloud = std::make_shared<Cloud>();
+  for (const Eigen::Vector3f& p : samples.points)
+    cloud->push_back(pcl::PointXYZ(p.x(), p.y(), p.z()));
+  return cloud;
+}
+
+/** count points of a generated model (already rotated). */
+Cloud::Ptr
+sparseCloud(const syn::CadModel& model, std::size_t count, std::uint64_t seed)
+{
+  syn::SamplingOptions options;
+  options.count = count;
+  options.seed = seed;
+  return cloudOf(syn::sampleCadModel(model, options));
+}
+
+std::array<std::size_t, 4>
+counts(const Estimator& est)
+{
+  const auto c = est.getSegmentation().classCounts();
+  return {c[1], c[2], c[3], 0};
+}
+
+TEST(EstimatorFill, ASetResolutionFinerThanThePointsFillsTheBand)
+{
+  // A cube at a set resolution of 128 with its points 0.7 and 0.9 cells apart: their
+  // cells leave holes (the points band gives 2/12/6, 4/15/6 and 6/11/6 for 8/12/6 at
+  // 0.7, seeds 1-3 of visfeat_generate). At 0.7 (4.4 points per cell^2) the spacing is
+  // measured only once the points band shows its holes; at 0.9 before the band.
+  const int resolution = 128;
+  for (const double spacing : {0.7, 0.9}) {
+    for (const std::uint64_t seed : {1u, 2u}) {
+      if (spacing == 0.9 && seed > 1)
+        break;
+      const syn::CadModel model =
+        syn::rotated(syn::cadModelByName("cube"), syn::randomRotation(seed));
+      Estimator est;
+      est.setInputCloud(
+        sparseCloud(model, syn::samplesForSpacing(model, resolution, spacing), seed));
+      est.setResolution(resolution);
+      Output out;
+      est.compute(out);
+      ASSERT_EQ(est.getErrorMessage(), "");
+      const std::string where = "spacing " + std::to_string(spacing) + " seed " +
+                                std::to_string(seed) + ": " +
+                                est.getSurfaceFillReason();
+      EXPECT_EQ(est.getSurfaceFillUsed(), visfeat::SurfaceFill::kLocalTriangles)
+        << where;
+      EXPECT_NEAR(est.getResolutionEstimate().spacing / est.getGrid().cell_size,
+                  spacing, 0.05)
+        << where;
+      EXPECT_EQ(est.getSurfaceFillReason().find("left holes") != std::string::npos,
+                spacing == 0.7)
+        << where;
+      EXPECT_EQ(counts(est), (std::array<std::size_t, 4>{8, 12, 6, 0})) << where;
+      EXPECT_TRUE(est.getWarnings().empty())
+        << where << "; " << est.getWarnings().front();
+    }
+  }
+  // Half a cell apart, as the automatic resolution puts them: the band of the points,
+  // and no k-d tree for the spacing.
+  const syn::CadModel model =
+    syn::rotated(syn::cadModelByName("cube"), syn::randomRotation(1));
+  Estimator est;
+  est.setInputCloud(
+    sparseCloud(model, syn::samplesForSpacing(model, resolution, 0.5), 1));
+  est.setResolution(resolution);
+  Output out;
+  est.compute(out);
+  ASSERT_EQ(est.getErrorMessage(), "");
+  EXPECT_EQ(est.getSurfaceFillUsed(), visfeat::SurfaceFill::kPoints)
+    << est.getSurfaceFillReason();
+  EXPECT_EQ(est.getResolutionEstimate().spacing, 0.0);
+  EXPECT_EQ(counts(est), (std::array<std::size_t, 4>{8, 12, 6, 0}));
+}
+
+TEST(EstimatorFill, AnUnevenDensityIsFilledBetweenThePoints)
+{
+  // One face of a cube 8 times denser than the others (a face near the scanner): the
+  // median spacing is the dense face's, 0.41 cells at 128, and the other faces' cells
+  // are left with holes (the points band repairs 0.31 of its cells and gives 0/1/2,
+  // 0/0/1 and 0/2/2 for seeds 1-3 of visfeat_generate).
+  for (const std::uint64_t seed : {1u, 2u}) {
+    const syn::CadModel model =
+      syn::rotated(syn::cadModelByName("cube"), syn::randomRotation(seed));
+    syn::SamplingOptions options;
+    options.count = syn::samplesForSpacing(model, 96, 0.5);
+    options.seed = seed;
+    options.face_density = syn::denseFace(model, 0, 8.0);
+    Estimator est;
+    est.setInputCloud(cloudOf(syn::sampleCadModel(model, options)));
+    est.setResolution(128);
+    Output out;
+    est.compute(out);
+    ASSERT_EQ(est.getErrorMessage(), "");
+    const std::string where =
+      "seed " + std::to_string(seed) + ": " + est.getSurfaceFillReason();
+    EXPECT_EQ(est.getSurfaceFillUsed(), visfeat::SurfaceFill::kLocalTriangles) << where;
+    EXPECT_NE(est.getSurfaceFillReason().find("uneven"), std::string::npos) << where;
+    EXPECT_LT(est.getResolutionEstimate().spacing / est.getGrid().cell_size,
+              visfeat::kFillSpacingCells)
+      << where;
+    EXPECT_EQ(counts(est), (std::array<std::size_t, 4>{8, 12, 6, 0})) << where;
+    EXPECT_TRUE(est.getWarnings().empty())
+      << where << "; " << est.getWarnings().front();
+  }
+}
+
+} // namespace
