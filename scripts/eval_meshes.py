@@ -30,10 +30,16 @@ Run (from the repository root, with a Release build):
   /usr/bin/python3 scripts/eval_meshes.py --out /tmp/eval_meshes \
       [--meshes fandisk.off cgal_part.off ...] [--resolution 512|auto] \
       [--visfeat build/tools/visfeat] [--threads 2] \
-      [--visfeat-option '-min_crease_angle 30'] [--analyse]
+      [--visfeat-option '-min_crease_angle 30'] [--analyse] \
+      [--points-per-cell2 1.5]   (sparser clouds: 1.5 = 0.82 cells apart)
+Needs numpy (apt-get install python3-numpy); scripts/install_deps.sh does not
+install it, as neither the tests nor the demo use this script.
 """
 import argparse, json, os, re, subprocess, sys, time
-import numpy as np
+try:
+    import numpy as np
+except ImportError:
+    sys.exit("eval_meshes.py: needs numpy (Debian: apt-get install python3-numpy)")
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 MODELS = os.path.normpath(os.path.join(HERE, "..", "..", "shared", "data", "models"))
