@@ -2,6 +2,8 @@
 // rasterised directly, sparse clouds filled at the resolution the topology needs, and
 // warnings instead of silent empty results.
 
+#include "estimator_fixtures.h"
+
 #include <support/cad_models.h>
 #include <support/evaluation.h>
 #include <visfeat/core/common/error.h>
@@ -22,36 +24,7 @@
 
 namespace {
 
-namespace syn = visfeat::synthetic;
-using Estimator =
-  visfeat::VisibilityFeatureEstimation<pcl::PointXYZ, visfeat::PointVisibility>;
-using Cloud = pcl::PointCloud<pcl::PointXYZ>;
-using Output = pcl::PointCloud<visfeat::PointVisibility>;
-
-/** count points of a generated model (already rotated). */
-syn::CadSamples
-samplesOf(const syn::CadModel& model, std::size_t count, std::uint64_t seed)
-{
-  syn::SamplingOptions options;
-  options.count = count;
-  options.seed = seed;
-  return syn::sampleCadModel(model, options);
-}
-
-Cloud::Ptr
-cloudOf(const syn::CadSamples& samples)
-{
-  auto cloud = std::make_shared<Cloud>();
-  for (const Eigen::Vector3f& p : samples.points)
-    cloud->push_back(pcl::PointXYZ(p.x(), p.y(), p.z()));
-  return cloud;
-}
-
-Cloud::Ptr
-sparseCloud(const syn::CadModel& model, std::size_t count, std::uint64_t seed)
-{
-  return cloudOf(samplesOf(model, count, seed));
-}
+using namespace visfeat_test::estimator;
 
 /** The model's mesh, tessellated to 0.05 cells at this resolution. */
 std::shared_ptr<visfeat::SurfaceMesh>
@@ -59,13 +32,6 @@ meshOf(const syn::CadModel& model, int resolution)
 {
   return std::make_shared<visfeat::SurfaceMesh>(
     syn::tessellateCadModel(model, 0.05 * syn::cellSize(model, resolution)).mesh);
-}
-
-std::array<std::size_t, 4>
-counts(const Estimator& est)
-{
-  const auto c = est.getSegmentation().classCounts();
-  return {c[1], c[2], c[3], 0};
 }
 
 TEST(EstimatorFill, SparseCloudsAreFilledAtTheTopologyResolution)

@@ -3,6 +3,8 @@
 // or once the points band shows its holes), and an uneven density whose median
 // spacing looks dense enough.
 
+#include "estimator_fixtures.h"
+
 #include <support/cad_models.h>
 #include <visfeat/point_types.h>
 #include <visfeat/surface_fill.h>
@@ -19,37 +21,7 @@
 
 namespace {
 
-namespace syn = visfeat::synthetic;
-using Estimator =
-  visfeat::VisibilityFeatureEstimation<pcl::PointXYZ, visfeat::PointVisibility>;
-using Cloud = pcl::PointCloud<pcl::PointXYZ>;
-using Output = pcl::PointCloud<visfeat::PointVisibility>;
-
-Cloud::Ptr
-cloudOf(const syn::CadSamples& samples)
-{
-  auto cloud = std::make_shared<Cloud>();
-  for (const Eigen::Vector3f& p : samples.points)
-    cloud->push_back(pcl::PointXYZ(p.x(), p.y(), p.z()));
-  return cloud;
-}
-
-/** count points of a generated model (already rotated). */
-Cloud::Ptr
-sparseCloud(const syn::CadModel& model, std::size_t count, std::uint64_t seed)
-{
-  syn::SamplingOptions options;
-  options.count = count;
-  options.seed = seed;
-  return cloudOf(syn::sampleCadModel(model, options));
-}
-
-std::array<std::size_t, 4>
-counts(const Estimator& est)
-{
-  const auto c = est.getSegmentation().classCounts();
-  return {c[1], c[2], c[3], 0};
-}
+using namespace visfeat_test::estimator;
 
 TEST(EstimatorFill, ASetResolutionFinerThanThePointsFillsTheBand)
 {
