@@ -105,6 +105,18 @@ TEST(EstimatorFill, AnUnevenDensityIsFilledBetweenThePoints)
     EXPECT_EQ(counts(est), (std::array<std::size_t, 4>{8, 12, 6, 0})) << where;
     EXPECT_TRUE(est.getWarnings().empty())
       << where << "; " << est.getWarnings().front();
+
+    // The points band set by hand: a warning of its holes, and no advice to raise
+    // the resolution (which would leave more holes) in the others.
+    est.setSurfaceFill(visfeat::SurfaceFill::kPoints);
+    est.compute(out);
+    ASSERT_EQ(est.getErrorMessage(), "");
+    bool holes = false;
+    for (const std::string& w : est.getWarnings()) {
+      holes = holes || w.find("the band has holes") != std::string::npos;
+      EXPECT_EQ(w.find("raise the resolution"), std::string::npos) << w;
+    }
+    EXPECT_TRUE(holes) << "seed " << seed;
   }
 }
 

@@ -363,8 +363,10 @@ printSummary(const Estimator& estimator, const vt::Options& opt)
   }
   print_info("Band from ");
   print_value("%s", visfeat::surfaceFillName(estimator.getSurfaceFillUsed()));
-  print_info(": %s; -fill overrides\n",
-             inToolTerms(estimator.getSurfaceFillReason()).c_str());
+  // the choice of -fill auto, which -fill overrides; a fill set by -fill says so
+  const bool chosen = estimator.getSurfaceFill() == visfeat::SurfaceFill::kAuto;
+  print_info(": %s%s\n", inToolTerms(estimator.getSurfaceFillReason()).c_str(),
+             chosen ? "; -fill overrides" : "");
   for (const std::string& note : estimator.getNotes())
     print_info("Note: %s\n", inToolTerms(note).c_str());
   print_info("Grid: origin (");

@@ -31,6 +31,11 @@ roughPoints(double band_roughness, bool noise_mode, double point_noise)
  * stops it (Run::search_cap_reason); any other reason is what the points support. */
 constexpr const char* kSearchLimitReason = "the search's limit";
 
+/** \brief The advice of the too-few-cores warnings where the band has holes: a finer
+ * resolution would leave more of them. */
+constexpr const char* kHolesFirst =
+  "close the band's holes first (next warning): a finer resolution would leave more";
+
 /** Whether the points' noise the fill measured reads the shape of a cloud too sparse
  * for its creases rather than noise (kShapeNotNoiseShare). */
 inline bool
@@ -110,6 +115,8 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::checkResults(const Results& re
   const double core_share = band.empty() ? 0.0 : double(cores) / double(band.size());
   const double repair_share =
     band.empty() ? 0.0 : double(band.repairCellCount()) / double(band.size());
+  // a band full of holes (its own warning below): a finer resolution makes it worse
+  const bool holes = repair_share > kMaxRepairShare;
   // a band in pieces: the points are sparser than the cells
   std::size_t largest_piece = 0;
   for (const std::uint32_t size : bandPieceSizes(band))
@@ -135,6 +142,8 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::checkResults(const Results& re
       w << detail::roughPointsAdvice(detail::spreadIsShape(run));
     } else if (at_points_cap) {
       denser(w); // (a lower min_radius on points this sparse gives fragments)
+    } else if (holes) {
+      w << detail::kHolesFirst;
     } else {
       w << "raise the resolution";
       if (run.fill == SurfaceFill::kPoints && run.resolution.spacing > 0.0)
@@ -154,6 +163,8 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::checkResults(const Results& re
       w << detail::roughPointsAdvice(detail::spreadIsShape(run));
     } else if (at_points_cap) {
       denser(w);
+    } else if (holes) {
+      w << detail::kHolesFirst;
     } else {
       w << "raise the resolution";
       if (!noise_mode_)
@@ -205,7 +216,7 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::checkResults(const Results& re
     }
     run.warnings.insert(run.warnings.begin(), r.str()); // the cause of the others
   }
-  if (repair_share > kMaxRepairShare) {
+  if (holes) {
     std::ostringstream r;
     r << "the band has holes: " << band.repairCellCount() << " of " << band.size()
       << " cells were added to close it (the points are sparser than the cells)";
