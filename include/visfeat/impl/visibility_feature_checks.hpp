@@ -254,7 +254,11 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::checkGraph(const Results& resu
       << run.search_cap_reason;
   else
     w << "raise the resolution";
-  if (!mesh_closed_) // a closed mesh has no border
+  if (!mesh_closed_ && run.search_cap > 0) // the automatic search left it here
+    w << " (setResolution(): the automatic search rises on such gaps for a closed mesh "
+         "only, as a cloud may be an open scan, whose border also leaves edges without "
+         "their outer corner)";
+  else if (!mesh_closed_) // a closed mesh has no border
     w << " (if the cloud is an open scan, its border also leaves edges without their "
          "outer corner)";
   run.warnings.push_back(w.str());
