@@ -120,4 +120,33 @@ TEST(EstimatorFill, AnUnevenDensityIsFilledBetweenThePoints)
   }
 }
 
+TEST(EstimatorFill, TheSearchWidensFeaturePointsOnceAtTheResolutionItPicks)
+{
+  // 20,000 points on the stepped block: raised to 256 for the fill (2.1 cells a
+  // spacing), then the search for its narrow faces goes finer (about 480: 4 cells a
+  // spacing). The feature points and the crease window widen by the spacing at the
+  // resolution picked, as with that resolution set; they were widened by both
+  // spacings (2.1 x 4 = 8.5 cells for 4), the run at 256 having widened the copy the
+  // search starts from.
+  const syn::CadModel model =
+    syn::rotated(syn::cadModelByName("stepped_block"), syn::randomRotation(21));
+  Estimator est;
+  est.setInputCloud(sparseCloud(model, 20000, 21));
+  est.setResolution(Estimator::kAutomaticResolution);
+  Output automatic, set;
+  est.compute(automatic);
+  ASSERT_EQ(est.getErrorMessage(), "");
+  const int picked = est.getResolutionEstimate().resolution;
+  ASSERT_GT(picked, 256) << "the search must go finer for this test";
+  est.setResolution(picked);
+  est.compute(set);
+  ASSERT_EQ(est.getErrorMessage(), "");
+  ASSERT_EQ(est.getSurfaceFillUsed(), visfeat::SurfaceFill::kLocalTriangles);
+  ASSERT_EQ(set.size(), automatic.size());
+  std::size_t differ = 0;
+  for (std::size_t i = 0; i < set.size(); ++i)
+    differ += set[i].feature_class != automatic[i].feature_class;
+  EXPECT_EQ(differ, 0u) << "of " << set.size() << " points at resolution " << picked;
+}
+
 } // namespace

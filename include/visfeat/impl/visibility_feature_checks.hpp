@@ -31,6 +31,10 @@ roughPoints(double band_roughness, bool noise_mode, double point_noise)
  * stops it (Run::search_cap_reason); any other reason is what the points support. */
 constexpr const char* kSearchLimitReason = "the search's limit";
 
+/** \brief The start of the note on a mesh's point spacing (chooseFill()): one such
+ * note, that of the resolution used. */
+constexpr const char* kSpacingNotePrefix = "the points lie ";
+
 /** \brief The advice of the too-few-cores warnings where the band has holes: a finer
  * resolution would leave more of them. */
 constexpr const char* kHolesFirst =

@@ -177,21 +177,30 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::chooseFill(Run& run) const
   }
   run.fill_reason = reason.str();
   // Cells finer than the points: a point is a feature point within the distance in
-  // point spacings (unless set), as its neighbours lie that far apart.
-  if (run.fill != SurfaceFill::kPoints && !point_feature_distance_ &&
-      spacing_cells > 1.0)
+  // point spacings (unless set), as its neighbours lie that far apart. Widened from the
+  // parameters, not from run's values: the search and the calmer resolution choose
+  // the fill again on a copy of the first run, already widened at its resolution.
+  const bool widen = run.fill != SurfaceFill::kPoints && spacing_cells > 1.0;
+  if (!point_feature_distance_)
     run.segmentation.point_feature_distance =
-      std::min(run.segmentation.point_feature_distance * spacing_cells,
-               SegmentationParameters::kPointFeatureDistanceRange.max);
+      widen ? std::min(getPointFeatureDistance() * spacing_cells,
+                       SegmentationParameters::kPointFeatureDistanceRange.max)
+            : getPointFeatureDistance();
   // Likewise the window of the crease angles holds as many points as on dense clouds.
-  if (run.fill != SurfaceFill::kPoints && spacing_cells > 1.0)
-    run.crease_angles.window_cells =
-      std::min(run.crease_angles.window_cells * spacing_cells,
-               CreaseAngleParameters::kWindowCellsRange.max);
-  // A mesh's band is as fine as the cells, its points are not: say what widened.
+  run.crease_angles.window_cells =
+    widen ? std::min(crease_angles_.window_cells * spacing_cells,
+                     CreaseAngleParameters::kWindowCellsRange.max)
+          : crease_angles_.window_cells;
+  // A mesh's band is as fine as the cells, its points are not: say what widened (at
+  // this resolution only).
+  const auto spacing_note = [](const std::string& note) {
+    return note.rfind(detail::kSpacingNotePrefix, 0) == 0;
+  };
+  run.notes.erase(std::remove_if(run.notes.begin(), run.notes.end(), spacing_note),
+                  run.notes.end());
   if (run.fill == SurfaceFill::kMesh && spacing_cells > 1.0) {
     std::ostringstream note;
-    note << "the points lie " << spacing_cells << " cells apart at resolution "
+    note << detail::kSpacingNotePrefix << spacing_cells << " cells apart at resolution "
          << run.resolution.resolution
          << ": feature points are taken that much wider, and the crease angles in a "
             "window that much larger; for one point a cell, sample the mesh to about "
