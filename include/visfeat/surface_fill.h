@@ -87,17 +87,6 @@ constexpr double kFillCheckPointsPerCell2 = 4.0;
  * 0.7 cells, 4.4 points per cell^2 at 256, is checked only this way.) */
 constexpr double kSpacingCheckRepairShare = 0.16;
 
-/** \brief A points band chosen automatically is made again, filled between the points,
- * when more of its cells than this were added by the repair, whatever the median
- * spacing: the density is uneven, and the sparser parts leave holes. Measured: uniform
- * samples of the 7 generated models at 256 (seeds 1-3) repair at most 0.147 of their
- * points band at 0.5 cells apart and 0.177 at 0.55 (kFillSpacingCells); the box with a
- * hole with one face 6 times denser (seeds 1-2, automatic resolution 281-328, median
- * spacing 0.5 cells) repairs 0.21 and 0.27 and gives 2/6/6 and 7/18/7 for 8/14/7,
- * filled 8/14/7 in both (its band 12-15 s, with a second job on the 2 cores, against
- * 0.5 s for the points). */
-constexpr double kUnevenRepairShare = 0.2;
-
 /** \brief Appended to the warnings of too few face cores when noise mode is off: noise
  * roughens the band as much as close features do (the tool says -noise_mode). */
 constexpr const char* kNoisyScanAdvice =
@@ -158,6 +147,17 @@ constexpr double kMinLargestPieceShare = 0.1;
  * points band (0.81 cells apart) repaired 0.294 of its cells and gave F1 0.11 with no
  * such warning. */
 constexpr double kMaxRepairShare = 0.2;
+
+/** \brief A points band chosen automatically is made again, filled between the points,
+ * when it has holes as kMaxRepairShare defines them, whatever the median spacing: the
+ * density is uneven, and the sparser parts leave holes. Measured: uniform samples of
+ * the 7 generated models at 256 (seeds 1-3) repair at most 0.147 of their points band
+ * at 0.5 cells apart and 0.177 at 0.55 (kFillSpacingCells); the box with a hole with
+ * one face 6 times denser (seeds 1-2, automatic resolution 281-328, median
+ * spacing 0.5 cells) repairs 0.21 and 0.27 and gives 2/6/6 and 7/18/7 for 8/14/7,
+ * filled 8/14/7 in both (its band 12-15 s, with a second job on the 2 cores, against
+ * 0.5 s for the points). */
+constexpr double kUnevenRepairShare = kMaxRepairShare;
 
 /** \brief One point of every cluster of copies: the finite points with those closer
  * than `radius` (world units) to a kept point removed.

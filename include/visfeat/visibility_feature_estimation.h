@@ -491,8 +491,7 @@ private:
   void chooseFill(Run& run) const;
   /** Sets run.point_noise where the fill measures it. */
   std::vector<CellCoord> fillCells(Run& run, const PointCloudIn& surface) const;
-  /** True where an automatic points band has holes that ask for the fill
-   * (kSpacingCheckRepairShare, kUnevenRepairShare): run's fill is changed, to build. */
+  /** An automatic points band with holes: true when run's fill changed, to build. */
   bool refillSparseBand(Run& run, const VoxelBand& band) const;
   void checkResults(const Results& results, Run& run) const;
   /** A warning where the graph is not that of a closed part (findGraphGaps()). */
