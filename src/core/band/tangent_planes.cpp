@@ -163,20 +163,28 @@ robustPlane(const std::vector<Eigen::Vector3d>& set,
   // the scale: the least, over the planes, of the worse of p's distance and the
   // kPlaneSupport-th smallest distance of a point besides the three that define it
   // (with p, at least kPlaneSupport + 3 points within it)
-  std::vector<double> residual;
-  residual.reserve(n);
   double scale = std::numeric_limits<double>::infinity();
   for (const Candidate& plane : candidates) {
     const Eigen::Vector3d& origin = set[plane.through[0]];
-    residual.clear();
-    for (std::size_t j = 1; j < n; ++j)
-      if (j != plane.through[0] && j != plane.through[1] && j != plane.through[2])
-        residual.push_back(std::abs(plane.normal.dot(set[j] - origin)));
-    if (residual.size() < kPlaneSupport)
+    const double at_p = std::abs(plane.normal.dot(p - origin));
+    if (at_p >= scale)
+      continue; // max(at_p, ...) cannot lower the scale
+    // the kPlaneSupport smallest residuals of the other points, ascending
+    std::array<double, kPlaneSupport> least;
+    least.fill(std::numeric_limits<double>::infinity());
+    std::size_t others = 0;
+    for (std::size_t j = 1; j < n; ++j) {
+      if (j == plane.through[0] || j == plane.through[1] || j == plane.through[2])
+        continue;
+      ++others;
+      double r = std::abs(plane.normal.dot(set[j] - origin));
+      for (std::size_t i = 0; i < kPlaneSupport && r < least.back(); ++i)
+        if (r < least[i])
+          std::swap(r, least[i]);
+    }
+    if (others < kPlaneSupport)
       continue;
-    const auto at = residual.begin() + static_cast<std::ptrdiff_t>(kPlaneSupport - 1);
-    std::nth_element(residual.begin(), at, residual.end());
-    scale = std::min(scale, std::max(std::abs(plane.normal.dot(p - origin)), *at));
+    scale = std::min(scale, std::max(at_p, least.back()));
   }
   if (!std::isfinite(scale))
     return fitted;
