@@ -121,4 +121,14 @@ TEST(ResolutionSearch, StepDoublesWithinTheCap)
   EXPECT_EQ(nextSearchResolution(0, 1024), 0);
 }
 
+TEST(ResolutionSearch, StepsGrowWithTheMaximum)
+{
+  using visfeat::searchSteps;
+  EXPECT_EQ(searchSteps(visfeat::kMaxSearchResolution), visfeat::kMaxSearchSteps);
+  EXPECT_EQ(searchSteps(512), visfeat::kMaxSearchSteps); // the cap stops it first
+  EXPECT_EQ(searchSteps(1500), visfeat::kMaxSearchSteps + 1);
+  EXPECT_EQ(searchSteps(2048), visfeat::kMaxSearchSteps + 1);
+  EXPECT_EQ(searchSteps(8192), visfeat::kMaxSearchSteps + 3);
+}
+
 } // namespace

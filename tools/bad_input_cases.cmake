@@ -30,6 +30,7 @@ set(VISFEAT_BAD_INPUT_CASES
   "resolution_zero|-resolution must be in&&got 0"
   "resolution_huge|-resolution must be in&&got 100000"
   "resolution_text|-resolution expects an integer, got 'abc'"
+  "max_search_resolution_tiny|-max_search_resolution must be in&&got 2"
   "resolution_over_memory|more than the limit of 1.0 MiB: lower the resolution"
   "threads_negative|-threads must be in&&got -1"
   "narrow_persistence_huge|-narrow_persistence must be in&&got 99"

@@ -50,6 +50,7 @@ inToolTerms(std::string message)
     {"call setInputMesh() first",
      "give a mesh (.obj, .off, .stl, or .ply with faces) as input"},
     {"setResolution()", "-resolution"},
+    {"setMaxSearchResolution()", "-max_search_resolution"},
     {"setSurfaceFill()", "-fill"},
     {"setNoiseMode(true)", "-noise_mode"},
   };
@@ -258,6 +259,7 @@ configureEstimator(Estimator& estimator,
   estimator.setInputCloud(in.xyz);
   estimator.setInputMesh(in.mesh);
   estimator.setResolution(opt.resolution);
+  estimator.setMaxSearchResolution(opt.max_search_resolution);
   estimator.setMaxRadius(opt.max_radius);
   estimator.setMinRadius(opt.min_radius);
   estimator.setVertexMaxCells(opt.vertex_cells);

@@ -25,6 +25,8 @@ namespace visfeat_tools {
 const std::set<std::string>&
 valueOptions()
 {
+  // (in columns: clang-format lists one a line with the longest name)
+  // clang-format off
   static const std::set<std::string> names{
     "-resolution",      "-max_radius",     "-min_radius",
     "-vertex_cells",    "-dimensionality", "-min_crease_angle",
@@ -33,7 +35,9 @@ valueOptions()
     "-mesh_points",     "-mesh_spacing",   "-png",
     "-png_radius",      "-png_size",       "-fill",
     "-fill_neighbours", "-fill_gap",       "-fill_edge",
-    "-fill_inset",      "-fill_votes",     "-narrow_persistence"};
+    "-fill_inset",      "-fill_votes",     "-narrow_persistence",
+    "-max_search_resolution"};
+  // clang-format on
   return names;
 }
 
@@ -73,14 +77,20 @@ printHelp(const char* program)
   print_info("    -resolution N     = cells along the longest side of the "
              "bounding box (default: ");
   print_value("automatic");
-  print_info(": %g point spacings per cell, the spacing estimated from k-NN "
-             "distances, at least %d where the band is filled between the points and "
-             "%d for a mesh; then doubled, up to %d, while the map shows narrow faces "
-             "or a closed mesh's graph is not closed; %d-%d cells)\n",
-             visfeat::kSpacingsPerCell, visfeat::kTopologyResolution,
-             visfeat::kTopologyResolution, visfeat::kMaxSearchResolution,
-             visfeat::GridSpec::kResolutionRange.min,
-             visfeat::GridSpec::kResolutionRange.max);
+  print_info(
+    ": %g point spacings per cell, the spacing estimated from k-NN "
+    "distances, at least %d where the band is filled between the points and "
+    "%d for a mesh; then doubled, up to %d (-max_search_resolution), while the "
+    "map shows narrow faces "
+    "or a closed mesh's graph is not closed; %d-%d cells)\n",
+    visfeat::kSpacingsPerCell, visfeat::kTopologyResolution,
+    visfeat::kTopologyResolution, visfeat::kMaxSearchResolution,
+    visfeat::GridSpec::kResolutionRange.min, visfeat::GridSpec::kResolutionRange.max);
+  print_info("    -max_search_resolution N = the automatic resolution's search goes no "
+             "finer (default: ");
+  print_value("%d", visfeat::kMaxSearchResolution);
+  print_info(" cells; 2048 resolves narrower faces, at a cost in time and memory, "
+             "and may split a mesh's coarse facets; see README)\n");
   print_info(
     "    -min_radius R     = cells with radius >= R form components (default: ");
   print_value("%d", kDefaultMinRadius);
@@ -210,6 +220,8 @@ readValues(const Arguments& args, Options& opt, std::string& error)
     return args.getReal(name, range.min, range.max, value, error);
   };
   if (!integer("-resolution", visfeat::GridSpec::kResolutionRange, opt.resolution) ||
+      !integer("-max_search_resolution", visfeat::GridSpec::kResolutionRange,
+               opt.max_search_resolution) ||
       !integer("-max_radius", Visibility::kMaxRadiusRange, opt.max_radius) ||
       !integer("-min_radius", Components::kMinRadiusRange, opt.min_radius) ||
       !integer("-vertex_cells", Components::kVertexMaxCellsRange, opt.vertex_cells) ||

@@ -9,11 +9,13 @@
 
 #include <visfeat/core/common/parameters.h>
 #include <visfeat/core/graph/crease_angles.h>
+#include <visfeat/core/grid/resolution_search.h>
 #include <visfeat/core/segmentation/components.h>
 #include <visfeat/core/visibility/visibility_map.h>
 #include <visfeat/surface_fill.h>
 
 #include <set>
+
 #include <string>
 
 namespace visfeat_tools {
@@ -37,6 +39,7 @@ struct Options
   std::string input;
   std::string output;
   int resolution = 0; // 0 = automatic
+  int max_search_resolution = visfeat::kMaxSearchResolution;
   int min_radius = kDefaultMinRadius;
   int max_radius = 0; // 0 = min_radius (the estimator's automatic cap)
   int vertex_cells = kDefaultVertexCells;

@@ -119,6 +119,7 @@ graphMetadata(const Estimator& estimator,
   meta.parameters = {
     {"resolution", std::to_string(estimator.getResolutionEstimate().resolution)},
     {"resolution_reason", estimator.getResolutionEstimate().reason},
+    {"max_search_resolution", std::to_string(estimator.getMaxSearchResolution())},
     {"copies", std::to_string(estimator.getResolutionEstimate().copies)},
     {"roughness_cells", std::to_string(estimator.getVoxelBand().roughness())},
     {"point_noise_cells", std::to_string(estimator.getPointNoise())},

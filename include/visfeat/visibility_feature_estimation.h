@@ -6,6 +6,7 @@
 #include <visfeat/core/graph/topology_graph.h>
 #include <visfeat/core/grid/cloud_shape.h>
 #include <visfeat/core/grid/resolution.h>
+#include <visfeat/core/grid/resolution_search.h>
 #include <visfeat/core/mesh/mesh_sampling.h>
 #include <visfeat/core/segmentation/feature_segmentation.h>
 #include <visfeat/core/visibility/free_space.h>
@@ -108,17 +109,19 @@ public:
    * of its points; then, while the map shows narrow faces (visfeat::narrowFaces(),
    * faces narrower than 2 min_radius cells), or, for a closed mesh (meshIsClosed()),
    * while its graph is not that of a closed part (findGraphGaps(); kSearchOnGraphGaps),
-   * doubled and computed again, at most
-   * kMaxSearchSteps times, up to kMaxSearchResolution and what the mesh, the fill or
-   * the points support (a warning where it cannot go finer); what was chosen and why is
-   * in getResolutionEstimate() after compute(). Features must be many cells apart
-   * (about 2 min_radius): 256 for parts whose faces are >= 1/10 of their size, 512 for
-   * finer detail; the point spacing must stay below ~0.7 cell. Memory grows with the
-   * cube (setMemoryLimit()). */
+   * doubled and computed again, up to getMaxSearchResolution() and what the mesh, the
+   * fill or the points support (a warning where it cannot go finer); what was chosen
+   * and why is in getResolutionEstimate() after compute(). Features must be about 2
+   * min_radius cells apart: 256 for faces >= 1/10 of the part, 512 for finer detail.
+   * Memory grows with the surface (setMemoryLimit()). */
   inline void setResolution(int resolution) { resolution_ = resolution; }
   /** \brief The resolution as set (0 = automatic). */
   inline int getResolution() const { return resolution_; }
-
+  /** \brief The automatic search goes no finer (cells; default kMaxSearchResolution,
+   * 1024; GridSpec::kResolutionRange; at most searchSteps() doublings). 2048 resolves
+   * narrow faces at a cost in time and memory, and may split coarse facets (README). */
+  inline void setMaxSearchResolution(int cells) { max_search_resolution_ = cells; }
+  inline int getMaxSearchResolution() const { return max_search_resolution_; }
   /** \brief Cap of the visibility radius, in rings. Default kAutoMaxRadius (0): the
    * min_radius compute() uses (the trimmed map; higher caps only cost time, radii above
    * min_radius change no region). Range VisibilityMap::Parameters::kMaxRadiusRange
@@ -506,8 +509,8 @@ private:
                    const Run& run,
                    const PointCloudIn& surface,
                    PointCloudOut& output) const;
-  /** The band cell of input point `index` (kNoCell if not finite): the band's record
-   * for the band's own cloud (noise mode's smoothed surface), else the point's cell. */
+  /** The band cell of input point `index` (kNoCell if not finite; the band's record for
+   * its own cloud, the noise mode's smoothed surface). */
   CellId bandCellOf(const VoxelBand& band, std::size_t index) const;
   /** A vertex region no point took (pointlessVertices) claims the nearest point within
    * kCornerClaimDistances x point_feature_distance that is no other vertex's. */
@@ -516,8 +519,8 @@ private:
                          const PointCloudIn& surface,
                          PointCloudOut& output) const;
   void buildGraph(Results& results, const Run& run, const PointCloudOut& output) const;
-  /** Cells, points and graph after FeatureSegmentation::mergeRegions(into); returns
-   * its renumbering, empty when nothing joins anything. */
+  /** Cells, points, graph after FeatureSegmentation::mergeRegions(into); returns its
+   * renumbering (empty: nothing joins). */
   std::vector<std::uint32_t>
   applyRegionMerge(Results& results,
                    const Run& run,
@@ -530,23 +533,20 @@ private:
   /** After the graph: the crease rule, then the stray regions (strayRegionMerge);
    * each edge's crease angle into the graph; then the contact creases. */
   void cleanUpRegions(Results& results, const Run& run, PointCloudOut& output) const;
-  /** Faces that still touch across a turn of at least the minimum crease angle, with
-   * no edge between them anywhere, get an edge region along the crease
-   * (locateContactCreases()); cells, points, graph and crease angles follow. */
+  /** Faces touching across a turn of at least the minimum crease angle, no edge between
+   * them, get an edge region along it (locateContactCreases()), and all follows. */
   void addContactCreases(Results& results, const Run& run, PointCloudOut& output) const;
   /** Corners split in two, corner spurs, dead-end corners, open faces (see there). */
   void joinSplitCorners(Results& results, const Run& run, PointCloudOut& output) const;
-  /** Then an edge that stops short of its corner is bridged to it (bridgesToCorners;
-   * clouds only). */
+  /** Then an edge stopping short of its corner is bridged to it (clouds only). */
   void
   bridgeEdgesToCorners(Results& results, const Run& run, PointCloudOut& output) const;
   /** Before the bridges: each corner takes the point nearest where its creases meet
    * (cornerMeets) and the face cells around it. */
   void
   placeCornersAtMeets(Results& results, const Run& run, PointCloudOut& output) const;
-  /** Points after addRegions() (see addContactCreases()); then `into` joins the added
-   * regions: merge, graph, crease angles of before (angle_of) through both
-   * renumberings. */
+  /** Points after addRegions() (addContactCreases()); then `into` joins the added
+   * regions (merge, graph, crease angles angle_of through both renumberings). */
   void relabelAddedPoints(const Results& results,
                           PointCloudOut& output,
                           const std::vector<std::uint32_t>& renumbered) const;
@@ -571,6 +571,7 @@ private:
   SegmentationParameters segmentation_parameters_;
   CreaseAngleParameters crease_angles_;
   std::uint64_t memory_limit_ = 0;
+  int max_search_resolution_ = kMaxSearchResolution;
   ProgressCallback progress_;
   int graph_dilation_ = -1;
   bool keep_free_space_ = false;

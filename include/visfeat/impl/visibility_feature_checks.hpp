@@ -258,7 +258,12 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::checkGraph(const Results& resu
       << run.search_cap_reason;
   else
     w << "raise the resolution";
-  if (!mesh_closed_ && run.search_cap > 0) // the automatic search left it here
+  if (mesh_closed_ && run.search_cap > 0 &&
+      run.search_cap_reason == detail::kSearchLimitReason)
+    w << " (setResolution(), or let the automatic search go finer: "
+         "setMaxSearchResolution(), now "
+      << max_search_resolution_ << ")";
+  else if (!mesh_closed_ && run.search_cap > 0) // the automatic search left it here
     w << " (setResolution(): the automatic search rises on such gaps for a closed mesh "
          "only, as a cloud may be an open scan, whose border also leaves edges without "
          "their outer corner)";

@@ -149,6 +149,8 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::prepare() const
                          : (touching ? TopologyGraphParameters::kDefaultDilationRadius
                                      : run.segmentation.components.min_radius);
   TopologyGraph::validate(run.graph);
+  checkRange("max_search_resolution", max_search_resolution_,
+             GridSpec::kResolutionRange, "cells");
   if (resolution_ != kAutomaticResolution &&
       !GridSpec::kResolutionRange.contains(resolution_)) {
     std::ostringstream msg;

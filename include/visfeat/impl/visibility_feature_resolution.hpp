@@ -97,7 +97,7 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::chooseResolution(
            << run.resolution.reason << " would support " << from_density << ")";
     run.resolution.resolution = kTopologyResolution;
     run.resolution.reason = reason.str();
-    run.search_cap = std::min(kMaxSearchResolution, GridSpec::kMaxResolution);
+    run.search_cap = std::min(max_search_resolution_, GridSpec::kMaxResolution);
     run.search_cap_reason = detail::kSearchLimitReason;
     return run.resolution.resolution;
   }
@@ -123,7 +123,7 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::chooseResolution(
     }
   }
   // The search for narrow faces may go finer, as far as the mesh or the fill allow.
-  run.search_cap = std::min(kMaxSearchResolution, GridSpec::kMaxResolution);
+  run.search_cap = std::min(max_search_resolution_, GridSpec::kMaxResolution);
   run.search_cap_reason = detail::kSearchLimitReason;
   if (!may_fill) {
     run.search_cap = from_density;
@@ -240,12 +240,13 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::searchResolution(
   const std::size_t min_cells = static_cast<std::size_t>(kNarrowFaceCoreAreas) *
                                 static_cast<std::size_t>(min_radius * min_radius);
   double discarded_ms = 0.0;
+  const int max_steps = searchSteps(max_search_resolution_);
   for (int step = 0;; ++step) {
     const std::vector<NarrowFace> faces = narrowFaces(
       results.band, results.map, min_radius, kNarrowFacePersistence, min_cells);
     const int current = run.resolution.resolution;
     const int next =
-      step < kMaxSearchSteps ? nextSearchResolution(current, run.search_cap) : 0;
+      step < max_steps ? nextSearchResolution(current, run.search_cap) : 0;
     std::ostringstream found;
     if (faces.empty()) {
       // A closed mesh bounds a solid: a graph that is not that of a closed part means
@@ -274,7 +275,7 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::searchResolution(
       std::ostringstream w;
       w << found.str() << ": they merge into the edges around them; the resolution "
         << "stays at " << current << ": ";
-      if (step >= kMaxSearchSteps)
+      if (step >= max_steps)
         w << "the search's last step";
       else if (current >= run.search_cap) // e.g. a chosen resolution above the cap
         w << "the search stops at " << run.search_cap << " (" << run.search_cap_reason
@@ -296,7 +297,9 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::searchResolution(
                run.search_cap_reason != detail::kSearchLimitReason)
         w << "sample denser so that the resolution can rise to resolve them";
       else
-        w << "set a finer resolution to resolve them, or lower min_radius";
+        w << "set a finer resolution to resolve them (or let the search go finer: "
+             "setMaxSearchResolution(), now "
+          << max_search_resolution_ << "), or lower min_radius";
       run.warnings.push_back(w.str());
       break;
     }

@@ -14,4 +14,13 @@ nextSearchResolution(int resolution, int cap)
   return next >= kMinSearchStep * resolution ? next : 0;
 }
 
+int
+searchSteps(int max_resolution)
+{
+  int steps = kMaxSearchSteps;
+  for (double r = kMaxSearchResolution; r < max_resolution; r *= kSearchStep)
+    ++steps;
+  return steps;
+}
+
 } // namespace visfeat

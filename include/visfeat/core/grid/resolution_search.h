@@ -22,7 +22,8 @@ constexpr int kMaxSearchResolution = 1024;
  * leaves such gaps too. */
 constexpr bool kSearchOnGraphGaps = true;
 
-/** \brief Finer resolutions the search tries after the first, at most. */
+/** \brief Finer resolutions the search tries after the first, at most, up to
+ * kMaxSearchResolution (searchSteps() for another cap). */
 constexpr int kMaxSearchSteps = 2;
 
 /** \brief Each step of the search doubles the resolution. A face's peak does not tell
@@ -52,5 +53,16 @@ constexpr int kNarrowFaceCoreAreas = 1;
  * \param[in] resolution the current resolution, cells along the longest side
  * \param[in] cap the finest resolution allowed (fill, memory, kMaxSearchResolution) */
 int nextSearchResolution(int resolution, int cap);
+
+/** \brief Steps the search may take up to a cap of `max_resolution` cells (the
+ * estimator's setMaxSearchResolution()): kMaxSearchSteps, plus one for each step of
+ * kSearchStep that the cap lies above kMaxSearchResolution (2048: 3). Measured
+ * 2026-12-06 on 2 cores, meshes with the default 1,000,000 output points and a cap of
+ * 2048 (each from 256): the public CGAL part 2/5/5 (truth 2/5/5) in 53 s, 1.9 GB
+ * peak; CGAL pinion 80/122/43 (truth 80/122/43) in 194 s, 4.9 GB; ABC 00000050
+ * 19/52/40 in 31 s, 1.1 GB; but the fandisk 30/46/16 (truth 24/34/12) in 67 s and
+ * the CGAL joint 14/56/73 (truth 12/22/10; 12/22/10 at 1024) in 163 s, 5.6 GB: its
+ * coarse facets become faces. Hence 1024 by default. */
+int searchSteps(int max_resolution);
 
 } // namespace visfeat
