@@ -228,6 +228,15 @@ TEST(ResolutionSearch, StopsAtTheMaximumSet)
   EXPECT_TRUE(
     mentions(est.getErrorMessage(), "max_search_resolution 2 is out of range"))
     << est.getErrorMessage();
+  // with a resolution set there is no search: a note says the maximum does nothing
+  est.setResolution(64);
+  est.setMaxSearchResolution(2048);
+  est.compute(out);
+  ASSERT_EQ(est.getErrorMessage(), "");
+  const auto& notes = est.getNotes();
+  EXPECT_TRUE(std::any_of(notes.begin(), notes.end(), [](const std::string& n) {
+    return mentions(n, "setMaxSearchResolution() (2048) has no effect");
+  }));
 }
 
 TEST(ResolutionSearch, WarnsWhereThePointsAloneCannotGoFiner)

@@ -41,26 +41,6 @@ const char* const kProgram = "visfeat";
 
 using vt::Estimator;
 
-/** \brief A message of the library in the tool's terms: its setters become the
- * options that set them. */
-std::string
-inToolTerms(std::string message)
-{
-  static const std::pair<const char*, const char*> kTerms[] = {
-    {"call setInputMesh() first",
-     "give a mesh (.obj, .off, .stl, or .ply with faces) as input"},
-    {"setResolution()", "-resolution"},
-    {"setMaxSearchResolution()", "-max_search_resolution"},
-    {"setSurfaceFill()", "-fill"},
-    {"setNoiseMode(true)", "-noise_mode"},
-  };
-  for (const auto& [library, tool] : kTerms)
-    for (std::size_t at = message.find(library); at != std::string::npos;
-         at = message.find(library, at + std::char_traits<char>::length(tool)))
-      message.replace(at, std::char_traits<char>::length(library), tool);
-  return message;
-}
-
 /** \brief Progress of the visibility map on stderr: only after the first 2 s, at most
  * every 0.5 s; one line rewritten with \r on a terminal, plain lines otherwise. The
  * callback may be called from several threads at once. */
@@ -331,7 +311,7 @@ compute(Estimator& estimator,
       setVerbosityLevel(level);
       progress.finish();
       print_info("\n");
-      error = inToolTerms(e.what());
+      error = vt::inToolTerms(e.what());
       return false;
     }
     setVerbosityLevel(level);
@@ -339,7 +319,7 @@ compute(Estimator& estimator,
   progress.finish();
   if (result.empty()) {
     print_info("\n");
-    const std::string why = inToolTerms(estimator.getErrorMessage());
+    const std::string why = vt::inToolTerms(estimator.getErrorMessage());
     error =
       "'" + opt.input + "': " + (why.empty() ? std::string("computation failed") : why);
     return false;
@@ -361,16 +341,16 @@ printSummary(const Estimator& estimator, const vt::Options& opt)
     print_info("Resolution ");
     print_value("%d", resolution.resolution);
     print_info(" chosen: %s; -resolution overrides\n",
-               inToolTerms(resolution.reason).c_str());
+               vt::inToolTerms(resolution.reason).c_str());
   }
   print_info("Band from ");
   print_value("%s", visfeat::surfaceFillName(estimator.getSurfaceFillUsed()));
   // the choice of -fill auto, which -fill overrides; a fill set by -fill says so
   const bool chosen = estimator.getSurfaceFill() == visfeat::SurfaceFill::kAuto;
-  print_info(": %s%s\n", inToolTerms(estimator.getSurfaceFillReason()).c_str(),
+  print_info(": %s%s\n", vt::inToolTerms(estimator.getSurfaceFillReason()).c_str(),
              chosen ? "; -fill overrides" : "");
   for (const std::string& note : estimator.getNotes())
-    print_info("Note: %s\n", inToolTerms(note).c_str());
+    print_info("Note: %s\n", vt::inToolTerms(note).c_str());
   print_info("Grid: origin (");
   print_value("%g %g %g", grid.origin.x(), grid.origin.y(), grid.origin.z());
   print_info("), cell ");
@@ -439,9 +419,9 @@ printSummary(const Estimator& estimator, const vt::Options& opt)
   // -q silences the rest, never these: a result that cannot be trusted says so
   for (const std::string& warning : estimator.getWarnings())
     if (opt.quiet)
-      std::fprintf(stderr, "visfeat: warning: %s\n", inToolTerms(warning).c_str());
+      std::fprintf(stderr, "visfeat: warning: %s\n", vt::inToolTerms(warning).c_str());
     else
-      print_warn("Warning: %s\n", inToolTerms(warning).c_str());
+      print_warn("Warning: %s\n", vt::inToolTerms(warning).c_str());
 }
 
 int

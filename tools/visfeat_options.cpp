@@ -354,4 +354,24 @@ readOptions(const Arguments& args, Options& opt, std::string& error)
                               error);
 }
 
+/** \brief A message of the library in the tool's terms: its setters become the
+ * options that set them. */
+std::string
+inToolTerms(std::string message)
+{
+  static const std::pair<const char*, const char*> kTerms[] = {
+    {"call setInputMesh() first",
+     "give a mesh (.obj, .off, .stl, or .ply with faces) as input"},
+    {"setResolution()", "-resolution"},
+    {"setMaxSearchResolution()", "-max_search_resolution"},
+    {"setSurfaceFill()", "-fill"},
+    {"setNoiseMode(true)", "-noise_mode"},
+  };
+  for (const auto& [library, tool] : kTerms)
+    for (std::size_t at = message.find(library); at != std::string::npos;
+         at = message.find(library, at + std::char_traits<char>::length(tool)))
+      message.replace(at, std::char_traits<char>::length(library), tool);
+  return message;
+}
+
 } // namespace visfeat_tools

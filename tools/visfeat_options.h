@@ -81,4 +81,8 @@ void printHelp(const char* program);
  * line. */
 bool readOptions(const Arguments& args, Options& options, std::string& error);
 
+/** \brief A message of the library in the tool's terms: its setters become the
+ * options that set them (printed lines and the graph JSON). */
+std::string inToolTerms(std::string message);
+
 } // namespace visfeat_tools

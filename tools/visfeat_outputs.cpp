@@ -114,17 +114,19 @@ graphMetadata(const Estimator& estimator,
   meta.offset = offset;
   meta.source = opt.input;
   const auto& sp = estimator.getSegmentationParameters();
-  meta.warnings = estimator.getWarnings();
-  meta.notes = estimator.getNotes();
+  for (const std::string& w : estimator.getWarnings())
+    meta.warnings.push_back(inToolTerms(w));
+  for (const std::string& n : estimator.getNotes())
+    meta.notes.push_back(inToolTerms(n));
   meta.parameters = {
     {"resolution", std::to_string(estimator.getResolutionEstimate().resolution)},
-    {"resolution_reason", estimator.getResolutionEstimate().reason},
+    {"resolution_reason", inToolTerms(estimator.getResolutionEstimate().reason)},
     {"max_search_resolution", std::to_string(estimator.getMaxSearchResolution())},
     {"copies", std::to_string(estimator.getResolutionEstimate().copies)},
     {"roughness_cells", std::to_string(estimator.getVoxelBand().roughness())},
     {"point_noise_cells", std::to_string(estimator.getPointNoise())},
     {"fill", visfeat::surfaceFillName(estimator.getSurfaceFillUsed())},
-    {"fill_reason", estimator.getSurfaceFillReason()},
+    {"fill_reason", inToolTerms(estimator.getSurfaceFillReason())},
     {"min_radius", std::to_string(sp.components.min_radius)},
     {"max_radius", std::to_string(opt.max_radius)},
     {"vertex_max_cells", std::to_string(sp.components.vertex_max_cells)},

@@ -174,6 +174,12 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::prepare() const
   const std::string note = shapeNote(shape);
   if (!note.empty())
     run.notes.push_back(note);
+  if (resolution_ != kAutomaticResolution &&
+      max_search_resolution_ != kMaxSearchResolution)
+    run.notes.push_back("setMaxSearchResolution() (" +
+                        std::to_string(max_search_resolution_) +
+                        ") has no effect: the resolution is set (setResolution()), so "
+                        "there is no search");
   run.times.shape_ms = detail::millisecondsSince(start);
 
   start = std::chrono::steady_clock::now();
