@@ -61,7 +61,7 @@ int nextSearchResolution(int resolution, int cap);
  * 2048 (each from 256): the public CGAL part 2/5/5 (truth 2/5/5) in 53 s, 1.9 GB
  * peak; CGAL pinion 80/122/43 (truth 80/122/43) in 194 s, 4.9 GB; ABC 00000050
  * 19/52/40 in 31 s, 1.1 GB; but the fandisk 30/46/16 (truth 24/34/12) in 67 s and
- * the CGAL joint 14/56/73 (truth 12/22/10; 12/22/10 at 1024) in 163 s, 5.6 GB: its
+ * the CGAL joint 14/56/73 (truth 12/22/10; 12/28/23 at 1024) in 163 s, 5.6 GB: its
  * coarse facets become faces. Hence 1024 by default. */
 int searchSteps(int max_resolution);
 
