@@ -15,7 +15,6 @@
 #include <visfeat/surface_fill.h>
 
 #include <set>
-
 #include <string>
 
 namespace visfeat_tools {

@@ -40,6 +40,15 @@ constexpr const char* kSpacingNotePrefix = "the points lie ";
 constexpr const char* kHolesFirst =
   "close the band's holes first (next warning): a finer resolution would leave more";
 
+/** \brief The way on where the automatic search stopped at its maximum (narrow faces
+ * or a closed mesh's graph gaps left): the setter and its value. */
+inline std::string
+searchFurtherAdvice(int max_search_resolution)
+{
+  return "let the automatic search go finer: setMaxSearchResolution(), now " +
+         std::to_string(max_search_resolution);
+}
+
 /** Whether the points' noise the fill measured reads the shape of a cloud too sparse
  * for its creases rather than noise (kShapeNotNoiseShare). */
 inline bool
@@ -260,9 +269,8 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::checkGraph(const Results& resu
     w << "raise the resolution";
   if (mesh_closed_ && run.search_cap > 0 &&
       run.search_cap_reason == detail::kSearchLimitReason)
-    w << " (setResolution(), or let the automatic search go finer: "
-         "setMaxSearchResolution(), now "
-      << max_search_resolution_ << ")";
+    w << " (setResolution(), or " << detail::searchFurtherAdvice(max_search_resolution_)
+      << ")";
   else if (!mesh_closed_ && run.search_cap > 0) // the automatic search left it here
     w << " (setResolution(): the automatic search rises on such gaps for a closed mesh "
          "only, as a cloud may be an open scan, whose border also leaves edges without "

@@ -297,9 +297,9 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::searchResolution(
                run.search_cap_reason != detail::kSearchLimitReason)
         w << "sample denser so that the resolution can rise to resolve them";
       else
-        w << "set a finer resolution to resolve them (or let the search go finer: "
-             "setMaxSearchResolution(), now "
-          << max_search_resolution_ << "), or lower min_radius";
+        w << "set a finer resolution to resolve them (or "
+          << detail::searchFurtherAdvice(max_search_resolution_)
+          << "), or lower min_radius";
       run.warnings.push_back(w.str());
       break;
     }
