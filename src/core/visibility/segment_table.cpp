@@ -74,6 +74,7 @@ SegmentTable::SegmentTable(int max_distance)
         stored += 2 * half + 1;
     }
   check_spans_.assign(static_cast<std::size_t>(stored), CheckSpan{});
+  checks_.assign(static_cast<std::size_t>(stored) * kCheckBlock, pack(0, 0));
   stretch_spans_.assign(static_cast<std::size_t>(stored), StretchSpan{});
 
   const std::int32_t side = window_bricks_ * FreeSpace::kBrickCells;
@@ -141,14 +142,21 @@ SegmentTable::addOffset(const Eigen::Vector3i& d, std::int32_t side)
       it->second |= 1u << lowest;
   }
   stretch_span.end = static_cast<std::int32_t>(stretches_.size());
-  CheckSpan& check_span = check_spans_[spanIndex(d)];
+  const std::size_t at = spanIndex(d);
+  CheckSpan& check_span = check_spans_[at];
   check_span.fold = static_cast<std::uint8_t>(fold);
   check_span.begin = static_cast<std::int32_t>(checks_.size());
   check_span.count = static_cast<std::uint16_t>(cells.size());
-  for (const auto& [offset, mask] : cells)
-    checks_.push_back(pack(offset, mask));
-  checks_.resize(static_cast<std::size_t>(check_span.begin) + paddedCount(cells.size()),
-                 pack(0, 0)); // the source cell, no subcell: always passes
+  for (std::size_t i = 0; i < cells.size(); ++i)
+    if (i < kCheckBlock)
+      checks_[at * kCheckBlock + i] = pack(cells[i].first, cells[i].second);
+    else
+      checks_.push_back(pack(cells[i].first, cells[i].second));
+  // the source cell, no subcell: always passes
+  checks_.resize(
+    static_cast<std::size_t>(check_span.begin) +
+      (cells.size() > kCheckBlock ? paddedCount(cells.size()) - kCheckBlock : 0),
+    pack(0, 0));
 }
 
 bool

@@ -32,10 +32,10 @@ TileWorker::estimateBytes(int window_bricks, std::uint64_t cells)
     static_cast<std::uint64_t>(window_bricks) * FreeSpace::kBrickCells;
   const std::uint64_t window_cells = side * side * side;
   const std::uint64_t local = std::min(cells, window_cells);
-  // window bytes and local_of_; per local cell: index, coord, adjacency, known, three
-  // bit words, two ring entries, batch slot
+  // window bytes and local_of_; per local cell: index, coord, place, adjacency, known,
+  // three bit words, two ring entries, batch slot
   return window_cells * (1 + sizeof(std::int32_t)) +
-         local * (4 + sizeof(Coord) + 24 + 1 + 24 + 8 + 1);
+         local * (4 + sizeof(Coord) + sizeof(Place) + 24 + 1 + 24 + 8 + 1);
 }
 
 void
@@ -59,6 +59,7 @@ TileWorker::load(std::size_t t)
   window_.load(free_space_, centre);
   const CellCoord& origin = window_.origin();
   const int half = window_.bricksPerSide() / 2;
+  const std::int32_t row_stride = table_.rowStride();
   for (int z = -half; z <= half; ++z)
     for (int y = -half; y <= half; ++y)
       for (int x = -half; x <= half; ++x) {
@@ -75,10 +76,12 @@ TileWorker::load(std::size_t t)
           coord_.push_back(Coord{static_cast<std::int16_t>(l.x()),
                                  static_cast<std::int16_t>(l.y()),
                                  static_cast<std::int16_t>(l.z())});
+          place_.push_back(Place{l.y() + row_stride * l.z(), l.x()});
           known_.push_back(__atomic_load_n(radii_ + *c, __ATOMIC_RELAXED));
         }
       }
   const std::size_t n = window_index_.size();
+  const auto sentinel = static_cast<std::int32_t>(n);
   const int side = window_.side();
   adjacent_.resize(n);
   for (std::size_t l = 0; l < n; ++l) {
@@ -86,17 +89,20 @@ TileWorker::load(std::size_t t)
     const int at[6] = {c.x, c.x, c.y, c.y, c.z, c.z};
     for (int d = 0; d < 6; ++d) {
       const int moved = at[d] + ((d & 1) ? -1 : 1);
-      adjacent_[l][static_cast<std::size_t>(d)] =
+      const std::int32_t y =
         moved < 0 || moved >= side
           ? -1
           : local_of_[static_cast<std::size_t>(window_index_[l] +
                                                steps_[static_cast<std::size_t>(d)])];
+      adjacent_[l][static_cast<std::size_t>(d)] = y < 0 ? sentinel : y;
     }
   }
-  visited_.assign(n, 0);
+  visited_.assign(n + 1, 0);
+  ring_bits_.assign(n + 1, 0);
+  next_bits_.assign(n + 1, 0);
   slot_.assign(n, -1);
-  ring_bits_.assign(n, 0);
-  next_bits_.assign(n, 0);
+  ring_.resize(n + 1);
+  next_.resize(n + 1);
 }
 
 void
@@ -106,56 +112,78 @@ TileWorker::unload()
     local_of_[static_cast<std::size_t>(i)] = -1;
   window_index_.clear();
   coord_.clear();
+  place_.clear();
   known_.clear();
+}
+
+std::size_t
+TileWorker::growRing(std::uint64_t active)
+{
+  // ring k of every active source at once: the unvisited neighbours of ring k - 1.
+  // No branch a neighbour: a missing one is the sentinel (always visited, so no fresh
+  // bit), and a cell is written at next_[count] every time but kept (count moves on)
+  // only when it gets its first bit of the ring.
+  std::size_t count = 0;
+  std::int32_t* next = next_.data();
+  std::uint64_t* visited = visited_.data();
+  std::uint64_t* ring_bits = ring_bits_.data();
+  std::uint64_t* next_bits = next_bits_.data();
+  for (std::size_t i = 0; i < ring_count_; ++i) {
+    const auto x = static_cast<std::size_t>(ring_[i]);
+    const std::uint64_t m = ring_bits[x] & active;
+    ring_bits[x] = 0;
+    if (m == 0)
+      continue;
+    for (const std::int32_t y : adjacent_[x]) {
+      const auto yi = static_cast<std::size_t>(y);
+      const std::uint64_t seen = visited[yi];
+      const std::uint64_t fresh = m & ~seen;
+      const std::uint64_t bits = next_bits[yi];
+      next[count] = y;
+      count += static_cast<std::size_t>((bits == 0) & (fresh != 0));
+      next_bits[yi] = bits | fresh;
+      visited[yi] = seen | fresh;
+    }
+  }
+  return count;
 }
 
 void
 TileWorker::runBatch(const CellId* first, int count)
 {
   const int max_radius = parameters_.max_radius;
-  std::array<std::int32_t, 64> source{};
+  std::array<std::int32_t, 64> source{}, source_index{}, source_row{}, source_x{};
   std::array<int, 64> radius{};
   std::uint64_t active =
     count == 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << count) - 1;
-  std::fill(visited_.begin(), visited_.end(), 0);
-  ring_.clear();
+  std::fill(visited_.begin(), visited_.end() - 1, 0);
+  visited_.back() = ~std::uint64_t{0};
+  ring_count_ = 0;
   for (int j = 0; j < count; ++j) {
+    const auto ji = static_cast<std::size_t>(j);
     const std::int32_t l =
       local_of_[static_cast<std::size_t>(window_.cellIndex(band_.coord(first[j])))];
-    source[static_cast<std::size_t>(j)] = l;
-    slot_[static_cast<std::size_t>(l)] = static_cast<std::int8_t>(j);
-    sees_[static_cast<std::size_t>(j)] = hidden_[static_cast<std::size_t>(j)] = 0;
-    radius[static_cast<std::size_t>(j)] = max_radius;
+    const auto li = static_cast<std::size_t>(l);
+    source[ji] = l;
+    source_index[ji] = window_index_[li];
+    source_row[ji] = place_[li].row;
+    source_x[ji] = place_[li].x;
+    slot_[li] = static_cast<std::int8_t>(j);
+    sees_[ji] = hidden_[ji] = 0;
+    radius[ji] = max_radius;
     const std::uint64_t bit = std::uint64_t{1} << j;
-    visited_[static_cast<std::size_t>(l)] |= bit;
-    ring_bits_[static_cast<std::size_t>(l)] |= bit;
-    ring_.push_back(l);
+    visited_[li] |= bit;
+    ring_bits_[li] |= bit;
+    ring_[ring_count_++] = l;
   }
 
-  for (int k = 1; k <= max_radius && active != 0 && !ring_.empty(); ++k) {
-    // ring k of every active source at once: the unvisited neighbours of ring k - 1
-    next_.clear();
-    for (const std::int32_t x : ring_) {
-      const std::uint64_t m = ring_bits_[static_cast<std::size_t>(x)] & active;
-      ring_bits_[static_cast<std::size_t>(x)] = 0;
-      if (m == 0)
-        continue;
-      for (const std::int32_t y : adjacent_[static_cast<std::size_t>(x)]) {
-        if (y < 0)
-          continue;
-        const auto yi = static_cast<std::size_t>(y);
-        const std::uint64_t fresh = m & ~visited_[yi];
-        if (fresh == 0)
-          continue;
-        if (next_bits_[yi] == 0)
-          next_.push_back(y);
-        next_bits_[yi] |= fresh;
-        visited_[yi] |= fresh;
-      }
-    }
+  const std::int32_t* row_middles = table_.rowMiddles();
+  std::uint64_t tests = 0;
+  for (int k = 1; k <= max_radius && active != 0 && ring_count_ != 0; ++k) {
+    const std::size_t next_count = growRing(active);
     // each source tests its ring-k cells until one is hidden
-    for (const std::int32_t y : next_) {
-      const auto yi = static_cast<std::size_t>(y);
+    for (std::size_t i = 0; i < next_count; ++i) {
+      const auto yi = static_cast<std::size_t>(next_[i]);
       std::uint64_t m = next_bits_[yi] & active;
       const std::uint8_t known = known_[yi];
       if (m == 0 || (known != kUnknownRadius && known >= k))
@@ -172,25 +200,23 @@ TileWorker::runBatch(const CellId* first, int count)
       }
       // look up every source's offset and prefetch its checks first, then test: the
       // table loads of the tests overlap instead of waiting one after another
-      const Coord& to = coord_[yi];
+      const Place to = place_[yi];
+      const std::int32_t* rows = row_middles + to.row;
       int n = 0;
       for (; m != 0; m &= m - 1) {
         const int j = __builtin_ctzll(m);
-        const Coord& from =
-          coord_[static_cast<std::size_t>(source[static_cast<std::size_t>(j)])];
-        const std::size_t at = table_.offsetIndex(
-          Eigen::Vector3i(to.x - from.x, to.y - from.y, to.z - from.z));
+        const auto ji = static_cast<std::size_t>(j);
+        const auto at =
+          static_cast<std::size_t>(rows[-source_row[ji]] + to.x - source_x[ji]);
         table_.prefetch(at, parameters_.opacity);
         pending_[static_cast<std::size_t>(n)] = {j, at};
         ++n;
       }
-      for (int i = 0; i < n; ++i) {
-        const auto [j, at] = pending_[static_cast<std::size_t>(i)];
-        ++tests_;
+      for (int p = 0; p < n; ++p) {
+        const auto [j, at] = pending_[static_cast<std::size_t>(p)];
+        ++tests;
         const bool seen = table_.seesAt(
-          window_,
-          window_index_[static_cast<std::size_t>(source[static_cast<std::size_t>(j)])],
-          at, parameters_.opacity);
+          window_, source_index[static_cast<std::size_t>(j)], at, parameters_.opacity);
         if (!seen) {
           radius[static_cast<std::size_t>(j)] = k - 1;
           active &= ~(std::uint64_t{1} << j);
@@ -201,12 +227,14 @@ TileWorker::runBatch(const CellId* first, int count)
       }
     }
     ring_.swap(next_);
+    ring_count_ = next_count;
     ring_bits_.swap(
       next_bits_); // next_bits_ now all 0: ring k - 1's were cleared above
   }
-  for (const std::int32_t x : ring_)
-    ring_bits_[static_cast<std::size_t>(x)] = 0;
+  for (std::size_t i = 0; i < ring_count_; ++i)
+    ring_bits_[static_cast<std::size_t>(ring_[i])] = 0;
 
+  tests_ += tests;
   for (int j = 0; j < count; ++j) {
     slot_[static_cast<std::size_t>(source[static_cast<std::size_t>(j)])] = -1;
     const auto r = static_cast<std::uint8_t>(radius[static_cast<std::size_t>(j)]);

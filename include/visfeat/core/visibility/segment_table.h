@@ -66,15 +66,24 @@ public:
   /** \brief The table's index of offset d (|d|_1 <= maxDistance()), for seesAt. */
   std::size_t offsetIndex(const Eigen::Vector3i& d) const { return spanIndex(d); }
 
+  /** \brief offsetIndex(b - a) in two parts, for many pairs of cells a, b:
+   * rowMiddles()[rowKey(b) - rowKey(a)] + b.x - a.x, where rowKey(p) = p.y +
+   * rowStride() p.z; the map computes each cell's key once, not once a pair. */
+  std::int32_t rowStride() const { return 2 * max_distance_ + 1; }
+  const std::int32_t* rowMiddles() const { return row_middle_.data() + row_centre_; }
+
   /** \brief Asks the cache for the first checks of offset index `at` (a hint only):
    * the map looks up the offsets of all sources of a target, prefetches, then tests,
    * so the table's loads of several tests overlap. */
   void prefetch(std::size_t at, double opacity) const
   {
-    if (opacity <= 0.0)
-      __builtin_prefetch(checks_.data() + check_spans_[at].begin);
-    else
-      __builtin_prefetch(stretches_.data() + stretch_spans_[at].begin);
+    // one prefetch of a selected address: GCC 12 -O3 dropped both prefetches when each
+    // branch had its own (no prefetch instruction in the library until 2026-12-07)
+    const void* first =
+      opacity <= 0.0
+        ? static_cast<const void*>(checks_.data() + at * kCheckBlock)
+        : static_cast<const void*>(stretches_.data() + stretch_spans_[at].begin);
+    __builtin_prefetch(first);
   }
 
   /** \brief sees() for the offset of index `at` = offsetIndex(d). */
@@ -85,14 +94,18 @@ public:
   {
     const std::uint8_t* cells = window.cells() + source;
     if (opacity <= 0.0) {
+      // the first block at a place known from `at` alone: its loads need not wait
+      // for the span's
       const CheckSpan& span = check_spans_[at];
+      const std::uint8_t* fold = folds_[span.fold].data(); // folds_[0]: identity
+      const auto read = [fold](unsigned byte) { return unsigned{fold[byte]}; };
+      const std::int32_t* first = checks_.data() + at * kCheckBlock;
+      if (!passBlocks(cells, first, first + kCheckBlock, read))
+        return false;
+      if (span.count <= kCheckBlock)
+        return true;
       const std::int32_t* v = checks_.data() + span.begin;
-      const std::int32_t* end = v + paddedCount(span.count);
-      if (span.fold == 0)
-        return passBlocks(cells, v, end, [](unsigned byte) { return byte; });
-      const std::uint8_t* fold = folds_[span.fold].data();
-      return passBlocks(cells, v, end,
-                        [fold](unsigned byte) { return unsigned{fold[byte]}; });
+      return passBlocks(cells, v, v + paddedCount(span.count) - kCheckBlock, read);
     }
     const StretchSpan& span = stretch_spans_[at];
     double blocked = 0.0;
@@ -122,7 +135,8 @@ public:
   std::size_t stretchesFor(const Eigen::Vector3i& d) const;
 
 private:
-  /** The exact test's checks of one offset: checks_[begin, begin + count). */
+  /** The exact test's checks of one offset: count checks, the first block at
+   * checks_[kCheckBlock spanIndex(d)], the rest from checks_[begin]. */
   struct CheckSpan
   {
     std::int32_t begin = 0;
@@ -177,8 +191,9 @@ private:
   std::vector<std::int32_t> row_middle_;   // per (dy, dz), (2 max_distance + 1)^2
   std::vector<CheckSpan> check_spans_;     // per offset, spanIndex order
   std::vector<StretchSpan> stretch_spans_; // per offset, spanIndex order
-  /** (window offset << 8) | mask: the exact test's checks; each offset's list is
-   * padded to whole blocks (kCheckBlock) with pack(0, 0), which always passes. */
+  /** (window offset << 8) | mask: the exact test's checks, first a block per offset
+   * (spanIndex order) then the rest of each; each offset's list is padded to whole
+   * blocks (kCheckBlock) with pack(0, 0), which always passes. */
   std::vector<std::int32_t> checks_;
   /** (window offset << 8) | subcells: the stretches, for an opacity. */
   std::vector<std::int32_t> stretches_;
