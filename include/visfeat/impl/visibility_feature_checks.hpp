@@ -5,6 +5,7 @@
 #include <visfeat/core/band/band_pieces.h>
 #include <visfeat/core/band/tangent_planes.h>
 #include <visfeat/core/graph/graph_gaps.h>
+#include <visfeat/core/segmentation/merged_valleys.h>
 #include <visfeat/impl/visibility_feature_estimation.hpp>
 
 #include <algorithm>
@@ -94,6 +95,65 @@ atPointsCap(const Run& run)
 {
   return run.search_cap > 0 && run.resolution.resolution >= run.search_cap &&
          run.search_cap_reason != kSearchLimitReason;
+}
+
+/** \brief The merged valleys of a result (mergedValleys(): radius at most
+ * mergedValleyRadius(min_radius), more than min_radius / 2 rings from any edge or
+ * vertex), or none
+ * where they are too few to say that creases merged (kMergedValleyCoreAreas core
+ * patches) or the regions do not cover the band (raw mode, cores only). */
+template <typename Results>
+MergedValleys
+manyMergedValleys(const Results& results, const SegmentationParameters& segmentation)
+{
+  if (segmentation.raw || !segmentation.complete_regions)
+    return {};
+  const int min_radius = segmentation.components.min_radius;
+  const MergedValleys valleys =
+    mergedValleys(results.band, results.map, results.segmentation,
+                  mergedValleyRadius(min_radius), min_radius / 2);
+  const auto enough = static_cast<std::size_t>(kMergedValleyCoreAreas) *
+                      static_cast<std::size_t>(min_radius * min_radius);
+  return valleys.cells >= enough ? valleys : MergedValleys{};
+}
+
+/** \brief The merged valleys in words, e.g. "1426 face cells in valleys of the map
+ * (radius 5 rings or less) more than 8 cells from any edge or vertex". */
+inline std::string
+describeMergedValleys(const MergedValleys& valleys, int min_radius)
+{
+  return std::to_string(valleys.cells) + " face cells in valleys of the map (radius " +
+         std::to_string(mergedValleyRadius(min_radius)) +
+         " rings or less, the deepest " + std::to_string(valleys.deepest) +
+         ") more than " + std::to_string(min_radius / 2) +
+         " cells from any edge or vertex";
+}
+
+/** \brief Where faces hold creases merged into them (manyMergedValleys()), a warning
+ * that says so and what to do (a finer resolution, or a denser sample where the
+ * automatic resolution is as fine as the points support). */
+template <typename Results, typename Run>
+void
+warnMergedValleys(const Results& results, Run& run, int max_search_resolution)
+{
+  const MergedValleys valleys = manyMergedValleys(results, run.segmentation);
+  if (valleys.cells == 0)
+    return;
+  const int min_radius = run.segmentation.components.min_radius;
+  const int resolution = run.resolution.resolution;
+  std::ostringstream w;
+  w << describeMergedValleys(valleys, min_radius) << ": creases closer than about "
+    << 2 * min_radius << " cells (2 min_radius) at resolution " << resolution
+    << " were merged into faces (the rims of a plate or wall thinner than that, steps, "
+       "close parallel creases), although the graph looks whole; ";
+  if (atPointsCap(run))
+    w << "sample denser: resolution " << resolution << " is " << run.search_cap_reason;
+  else if (run.search_cap > 0 && run.search_cap_reason == kSearchLimitReason)
+    w << "raise the resolution (setResolution(), or "
+      << searchFurtherAdvice(max_search_resolution) << ")";
+  else
+    w << "raise the resolution";
+  run.warnings.push_back(w.str());
 }
 
 } // namespace detail
@@ -241,6 +301,8 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::checkResults(const Results& re
     run.warnings.push_back(r.str());
   }
   checkGraph(results, run);
+  if (run.warnings.empty()) // the graph looks whole, yet creases may have merged
+    detail::warnMergedValleys(results, run, max_search_resolution_);
 }
 
 template <typename PointInT, typename PointOutT>

@@ -256,12 +256,20 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::searchResolution(
                                  !run.segmentation.raw
                                ? findGraphGaps(results.graph)
                                : GraphGaps{};
-      if (!gaps.any())
-        break;
-      found << "a closed mesh whose graph at resolution " << current
-            << " is not that of a closed part (" << gaps.describe() << ")";
+      if (gaps.any()) {
+        found << "a closed mesh whose graph at resolution " << current
+              << " is not that of a closed part (" << gaps.describe() << ")";
+      } else {
+        // creases merged into faces, which leave the graph closed (any input)
+        const MergedValleys valleys =
+          detail::manyMergedValleys(results, run.segmentation);
+        if (valleys.cells == 0)
+          break;
+        found << detail::describeMergedValleys(valleys, min_radius) << " at resolution "
+              << current << " (creases merged into faces)";
+      }
       if (next == 0)
-        break; // checkGraph() has said so
+        break; // checkGraph() or detail::warnMergedValleys() has said so
     } else {
       int narrowest = min_radius;
       for (const NarrowFace& face : faces)

@@ -1,0 +1,77 @@
+#pragma once
+
+#include <visfeat/core/band/voxel_band.h>
+#include <visfeat/core/segmentation/feature_segmentation.h>
+#include <visfeat/core/visibility/visibility_map.h>
+
+#include <cstddef>
+
+namespace visfeat {
+
+/** \brief Face cells in deep valleys of the visibility map, far from every edge and
+ * vertex: creases the segmentation merged into a face.
+ *
+ * A crease hides the band beyond it, so the cells along it have small radii (a valley
+ * of the map), and a segmentation that finds the crease puts an edge there. When
+ * features lie closer than about 2 min_radius cells (the rims of a plate thinner than
+ * that, steps, parallel creases), no core forms between them and their valleys can end
+ * up inside faces, with nothing in the graph to show it: a plate 12 cells thick at 255
+ * cells gave 0 vertices, 1 edge and 2 faces (truth 8/14/7), a closed graph, no
+ * warning. Those faces hold cells whose radius is a few rings although no edge or
+ * vertex lies near them; a curved face (a cylinder of radius R cells reaches about
+ * sqrt(12 R) rings) or a fillet does not go that low.
+ *
+ * Source: visfeat (not in the paper), after the narrow faces of narrowFaces(). */
+struct MergedValleys
+{
+  /** \brief Face cells with radius <= the valley radius and more than the reach from
+   * every edge or vertex cell. */
+  std::size_t cells = 0;
+  /** \brief Smallest radius among them, rings (0 when there are none). */
+  int deepest = 0;
+  /** \brief Cells of the largest 6-connected group of them (a merged crease is a line
+   * of them; the bumps of a rough band are scattered). */
+  std::size_t largest = 0;
+};
+
+/** \brief Largest radius of a merged valley's cell, rings. Measured 2026-12-07 at 256
+ * cells (dense clouds, rotations 1-2, face cells more than 8 rings from any edge or
+ * vertex): the cube, icosahedron, cylinder, box with hole and U prism have 4-13 such
+ * cells at 5 rings (11-20 at 6), and noisy clouds (sigma 0.1 cells, noise mode) 0-2;
+ * the thin plate with hole (12 cells thick) 800-1,426 at 5 rings, 2,280-3,266 at 6
+ * (rotation 3, which finds half its edges: 212 at 5). */
+constexpr int kMergedValleyRadius = 5;
+
+/** \brief kMergedValleyRadius for another min_radius: in proportion (5/16 of it,
+ * rounded down), as the radii of a crease's valley scale with the cells. */
+constexpr int
+mergedValleyRadius(int min_radius)
+{
+  return kMergedValleyRadius * min_radius / 16;
+}
+
+/** \brief Merged valley cells a result may hold before the search goes finer and
+ * compute() warns, as a multiple of min_radius^2 (a core's patch; 256 cells at the
+ * defaults). Measured 2026-12-07 (kMergedValleyRadius, reach min_radius / 2): sparse
+ * clouds of 10,000 points filled between the points hold 9-53 (the bumps of a rough
+ * band); the public meshes at the resolution the search gives them 1-127 (fandisk
+ * at 512 and 1024: 74 and 127; V-HACD block at 512: 116; CGAL part at 1024: 1); the
+ * thin plate 800-1,426, the stepped block at 256 46-570, the ABC 00000050 assembly
+ * at 1024 12,221 (its plates 12-30 cells thick, parts 1-2 cells apart). */
+constexpr int kMergedValleyCoreAreas = 1;
+
+/** \brief The merged valleys of a segmented band (see MergedValleys).
+ * \param[in] band the band the map and segmentation were computed on
+ * \param[in] map its visibility map
+ * \param[in] segmentation its regions (cellClass() per cell)
+ * \param[in] valley_radius largest radius of a valley cell, rings
+ * \param[in] reach rings (6-steps through the band) from the nearest edge or vertex
+ *            cell beyond which a valley cell counts
+ * \return the count and the deepest radius; none when the segmentation has no face */
+MergedValleys mergedValleys(const VoxelBand& band,
+                            const VisibilityMap& map,
+                            const FeatureSegmentation& segmentation,
+                            int valley_radius,
+                            int reach);
+
+} // namespace visfeat
