@@ -41,6 +41,36 @@ CellIndex::allocateBricks(const std::vector<CellCoord>& cells)
   cells_.resize(blocks * kBrickCells, kNoCell);
 }
 
+void
+CellIndex::neighbourhood(const CellCoord& c, std::array<CellId, 27>& out) const
+{
+  const auto inner = [](int v) {
+    const int o = v & kBrickMask;
+    return o >= 1 && o < kBrickMask;
+  };
+  if (inner(c.x()) && inner(c.y()) && inner(c.z())) {
+    const std::int32_t brick = brick_slot_[brickOf(c)];
+    if (brick < 0) {
+      out.fill(kNoCell);
+      return;
+    }
+    const CellId* centre =
+      cells_.data() + static_cast<std::size_t>(brick) * kBrickCells + offsetInBrick(c);
+    constexpr std::ptrdiff_t dy = 1 << kBrickShift, dz = 1 << (2 * kBrickShift);
+    std::size_t k = 0;
+    for (std::ptrdiff_t z = -dz; z <= dz; z += dz)
+      for (std::ptrdiff_t y = -dy; y <= dy; y += dy)
+        for (std::ptrdiff_t x = -1; x <= 1; ++x)
+          out[k++] = centre[z + y + x];
+    return;
+  }
+  std::size_t k = 0;
+  for (int z = -1; z <= 1; ++z)
+    for (int y = -1; y <= 1; ++y)
+      for (int x = -1; x <= 1; ++x)
+        out[k++] = find(c + CellCoord(x, y, z));
+}
+
 std::uint64_t
 CellIndex::memoryBytes() const
 {
