@@ -1,7 +1,8 @@
 // findGraphGaps(): where a topology graph departs from that of a closed part. A box's
 // surface labelled by its faces, edges and corners has none; the same box with one
 // corner relabelled as face, or a face cut off from the rest, has them; an edge with
-// the same face on both sides (a crease fading into its face) is counted apart.
+// the same face on both sides and a free end (a crease fading into its face) is
+// counted apart.
 
 #include "band_fixtures.h"
 
@@ -109,27 +110,31 @@ TEST(GraphGaps, AnEdgeWithOneFaceOnBothSidesIsAFadingCreaseNotAGap)
 {
   LabelledBox box;
   // the face y = lo joins the face x = lo: the edge between them has that face on
-  // both sides, as a crease fading into its face has
+  // both sides and a corner at both ends, so no end fades: the face on its other side
+  // merged (2026-12-07; it counted as a fading crease before, and the generated thin
+  // plate at 510 cells hid four such edges behind a closed-looking graph)
   box.joinRegion(box.ids.at({0, -1, 0}), box.ids.at({-1, 0, 0}));
   const TopologyGraph graph = box.graph();
   ASSERT_EQ(graph.facesOfEdge(box.ids.at({-1, -1, 0})),
             std::vector<std::uint32_t>{box.ids.at({-1, 0, 0})});
-  const GraphGaps gaps = visfeat::findGraphGaps(graph);
-  EXPECT_EQ(gaps.edges, 12u);
-  EXPECT_EQ(gaps.one_face, 1u);
-  EXPECT_EQ(gaps.one_corner, 0u);
-  EXPECT_EQ(gaps.not_two_faces, 0u);
-  EXPECT_FALSE(gaps.any());
-  EXPECT_EQ(gaps.describe(), "");
+  const GraphGaps merged = visfeat::findGraphGaps(graph);
+  EXPECT_EQ(merged.edges, 12u);
+  EXPECT_EQ(merged.one_face, 0u);
+  EXPECT_EQ(merged.one_corner, 0u);
+  EXPECT_EQ(merged.not_two_faces, 1u);
+  EXPECT_TRUE(merged.any());
+  EXPECT_EQ(merged.describe(), "1 edge does not lie between two faces");
 
-  // with its corner at z = lo gone as well, the three edges there lose it; the fading
-  // crease is still counted apart
+  // with its corner at z = lo gone as well, it ends in its face there, as a crease
+  // fading into its face does: counted apart; the two other edges at that corner lose
+  // it
   box.joinRegion(box.ids.at({-1, -1, -1}), box.ids.at({-1, 0, 0}));
-  const GraphGaps without_corner = visfeat::findGraphGaps(box.graph());
-  EXPECT_EQ(without_corner.one_face, 1u);
-  EXPECT_EQ(without_corner.one_corner, 2u);
-  EXPECT_TRUE(without_corner.any());
-  EXPECT_EQ(without_corner.describe(),
+  const GraphGaps fading = visfeat::findGraphGaps(box.graph());
+  EXPECT_EQ(fading.one_face, 1u);
+  EXPECT_EQ(fading.one_corner, 2u);
+  EXPECT_EQ(fading.not_two_faces, 0u);
+  EXPECT_TRUE(fading.any());
+  EXPECT_EQ(fading.describe(),
             "2 of 12 edges end at a corner on one side only (1 more edge has one face "
             "on both sides: a crease fading into it)");
 }

@@ -16,11 +16,11 @@ findGraphGaps(const TopologyGraph& graph)
       continue;
     ++gaps.edges;
     const std::size_t faces = graph.facesOfEdge(id).size();
-    if (faces == 1) { // a crease fading into its face: no corner where it fades
-      ++gaps.one_face;
+    const std::size_t corners = graph.verticesOfEdge(id).size();
+    if (faces == 1 && corners < 2) { // a crease fading into its face: no corner where
+      ++gaps.one_face;               // it fades
       continue;
     }
-    const std::size_t corners = graph.verticesOfEdge(id).size();
     gaps.one_corner += corners == 1 ? 1 : 0;
     gaps.no_corner += corners == 0 ? 1 : 0;
     gaps.not_two_faces += faces != 2 ? 1 : 0;

@@ -20,14 +20,19 @@ namespace visfeat {
  * segmentation keeps such an edge only when it bends like one, kFadingCreaseVariation
  * in flat_cores.h: a fin sinking into a face, a crease turning shallow towards one end;
  * the public fandisk has two): its faded end has no corner. It is counted apart
- * (one_face) and is no gap. */
+ * (one_face) and is no gap. An edge with one face and a corner at both ends has no
+ * faded end: the face on its other side merged into that one (the generated thin plate
+ * with a hole at 510 cells, rotation 1: four such edges along its rims, 5/6/4 for
+ * 8/14/7, where the graph looked closed). It does not lie between two faces. */
 struct GraphGaps
 {
   std::size_t edges = 0;         // edge regions in all
   std::size_t one_corner = 0;    // edges touching exactly one vertex (one_face aside)
   std::size_t no_corner = 0;     // edges touching none (a closed loop needs none)
-  std::size_t not_two_faces = 0; // edges touching no face or more than two
-  std::size_t one_face = 0;      // edges touching one face: creases fading into it
+  std::size_t not_two_faces = 0; // edges touching no face, more than two, or one face
+                                 // with a corner at both ends
+  std::size_t one_face = 0;      // edges touching one face and at most one corner:
+                                 // creases fading into it
   std::size_t lone_regions = 0;  // regions touching no other (with other regions)
 
   /** \brief Whether a gap that a closed part never has is there: an edge with one
