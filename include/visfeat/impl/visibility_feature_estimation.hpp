@@ -373,11 +373,13 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::mergeShallowCreases(
       results.band.grid().cell_size, run.crease_angles.window_cells,
       run.crease_angles.min_crease_angle, run.visibility.threads);
   };
-  std::vector<CreaseAngle> angles = measure();
-  const std::vector<CreaseAngle> contacts =
-    measureFaceContacts(results.band, results.segmentation.cellLabels(), points, labels,
-                        results.segmentation.regionClasses(),
-                        run.crease_angles.window_cells, run.visibility.threads);
+  // the first angles and the contacts share their index of the face points
+  CreaseMeasures measures = measureCreasesAndContacts(
+    results.band, results.segmentation.cellLabels(), points, labels,
+    results.segmentation.regionClasses(), run.crease_angles.window_cells,
+    run.crease_angles.min_crease_angle, run.visibility.threads);
+  std::vector<CreaseAngle> angles = std::move(measures.angles);
+  const std::vector<CreaseAngle>& contacts = measures.contacts;
   const std::vector<std::uint32_t> into = shallowCreaseMerge(
     results.graph, angles, contacts, run.crease_angles.min_crease_angle);
   if (!applyRegionMerge(results, run, output, into).empty()) { // the new edges' angles

@@ -15,6 +15,7 @@
 #include <cmath>
 #include <iterator>
 #include <map>
+#include <optional>
 
 namespace visfeat {
 
@@ -91,19 +92,19 @@ measureEdge(const FacePointIndex& index,
 
 } // namespace
 
+namespace {
+
+/** measureCreaseAngles() with the face points' index (bucket: the window). */
 std::vector<CreaseAngle>
-measureCreaseAngles(const std::vector<Eigen::Vector3d>& points,
-                    const std::vector<std::uint32_t>& labels,
-                    const std::vector<FeatureClass>& classes,
-                    double cell_size,
-                    double window_cells,
-                    double walk_below_degrees,
-                    int threads)
+measureEdges(const FacePointIndex& index,
+             const std::vector<Eigen::Vector3d>& points,
+             const std::vector<std::uint32_t>& labels,
+             const std::vector<FeatureClass>& classes,
+             double radius,
+             double walk_below_degrees,
+             int threads)
 {
   std::vector<CreaseAngle> angles(classes.size());
-  const double radius = window_cells * cell_size;
-  if (!(radius > 0.0) || points.size() != labels.size())
-    return angles;
   // Per edge, its points.
   std::vector<std::vector<std::uint32_t>> edge_points(classes.size());
   for (std::size_t i = 0; i < points.size(); ++i) {
@@ -112,7 +113,6 @@ measureCreaseAngles(const std::vector<Eigen::Vector3d>& points,
         points[i].allFinite())
       edge_points[l - 1].push_back(static_cast<std::uint32_t>(i));
   }
-  const FacePointIndex index(points, labels, classes, radius);
   // Edges are independent: one at a time on the threads (each writes its own entry).
   parallelFor(classes.size(), threads, 1, [&](std::size_t first, std::size_t last) {
     for (std::size_t r = first; r < last; ++r)
@@ -122,20 +122,42 @@ measureCreaseAngles(const std::vector<Eigen::Vector3d>& points,
   return angles;
 }
 
+} // namespace
+
 std::vector<CreaseAngle>
-measureFaceContacts(const VoxelBand& band,
-                    const std::vector<std::uint32_t>& cell_labels,
-                    const std::vector<Eigen::Vector3d>& points,
+measureCreaseAngles(const std::vector<Eigen::Vector3d>& points,
                     const std::vector<std::uint32_t>& labels,
                     const std::vector<FeatureClass>& classes,
+                    double cell_size,
                     double window_cells,
+                    double walk_below_degrees,
                     int threads)
+{
+  const double radius = window_cells * cell_size;
+  if (!(radius > 0.0) || points.size() != labels.size())
+    return std::vector<CreaseAngle>(classes.size());
+  const FacePointIndex index(points, labels, classes, radius);
+  return measureEdges(index, points, labels, classes, radius, walk_below_degrees,
+                      threads);
+}
+
+namespace {
+
+/** measureFaceContacts() with the face points' index, which `indexOf()` gives only
+ * where two faces touch (the clean parts need none). */
+template <typename IndexOf>
+std::vector<CreaseAngle>
+measureContacts(const VoxelBand& band,
+                const std::vector<std::uint32_t>& cell_labels,
+                const std::vector<Eigen::Vector3d>& points,
+                const std::vector<std::uint32_t>& labels,
+                const std::vector<FeatureClass>& classes,
+                double window_cells,
+                int threads,
+                IndexOf&& indexOf)
 {
   std::vector<CreaseAngle> contacts;
   const double cell = band.grid().cell_size, radius = window_cells * cell;
-  if (!(radius > 0.0) || points.size() != labels.size() ||
-      cell_labels.size() != band.size())
-    return contacts;
   const auto isFace = [&](std::uint32_t l) {
     return l != 0 && l <= classes.size() && classes[l - 1] == FeatureClass::kFace;
   };
@@ -157,7 +179,7 @@ measureFaceContacts(const VoxelBand& band,
   }
   if (cells_of.empty())
     return contacts; // no two faces touch: nothing to index (clean parts)
-  const FacePointIndex index(points, labels, classes, radius);
+  const FacePointIndex& index = indexOf();
   const double clearance = CreaseAngleParameters::kContactClearanceCells * cell;
   const FacePointIndex features(points, labels, classes, clearance, false);
   // Pairs are independent: one at a time on the threads, each into its own slot,
@@ -198,6 +220,53 @@ measureFaceContacts(const VoxelBand& band,
     if (contact.samples > 0)
       contacts.push_back(contact);
   return contacts;
+}
+
+} // namespace
+
+std::vector<CreaseAngle>
+measureFaceContacts(const VoxelBand& band,
+                    const std::vector<std::uint32_t>& cell_labels,
+                    const std::vector<Eigen::Vector3d>& points,
+                    const std::vector<std::uint32_t>& labels,
+                    const std::vector<FeatureClass>& classes,
+                    double window_cells,
+                    int threads)
+{
+  const double radius = window_cells * band.grid().cell_size;
+  if (!(radius > 0.0) || points.size() != labels.size() ||
+      cell_labels.size() != band.size())
+    return {};
+  std::optional<FacePointIndex> index;
+  return measureContacts(band, cell_labels, points, labels, classes, window_cells,
+                         threads, [&]() -> const FacePointIndex& {
+                           index.emplace(points, labels, classes, radius);
+                           return *index;
+                         });
+}
+
+CreaseMeasures
+measureCreasesAndContacts(const VoxelBand& band,
+                          const std::vector<std::uint32_t>& cell_labels,
+                          const std::vector<Eigen::Vector3d>& points,
+                          const std::vector<std::uint32_t>& labels,
+                          const std::vector<FeatureClass>& classes,
+                          double window_cells,
+                          double walk_below_degrees,
+                          int threads)
+{
+  const double radius = window_cells * band.grid().cell_size;
+  if (!(radius > 0.0) || points.size() != labels.size())
+    return {std::vector<CreaseAngle>(classes.size()), {}};
+  const FacePointIndex index(points, labels, classes, radius);
+  CreaseMeasures measures;
+  measures.angles =
+    measureEdges(index, points, labels, classes, radius, walk_below_degrees, threads);
+  if (cell_labels.size() == band.size())
+    measures.contacts =
+      measureContacts(band, cell_labels, points, labels, classes, window_cells, threads,
+                      [&]() -> const FacePointIndex& { return index; });
+  return measures;
 }
 
 } // namespace visfeat
