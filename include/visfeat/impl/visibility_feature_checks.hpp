@@ -118,7 +118,8 @@ manyMergedValleys(const Results& results, const SegmentationParameters& segmenta
 }
 
 /** \brief The merged valleys in words, e.g. "1426 face cells in valleys of the map
- * (radius 5 rings or less) more than 8 cells from any edge or vertex". */
+ * (radius 5 rings or less, the deepest 4) more than 8 cells from any edge or vertex".
+ */
 inline std::string
 describeMergedValleys(const MergedValleys& valleys, int min_radius)
 {

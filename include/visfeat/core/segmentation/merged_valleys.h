@@ -29,9 +29,6 @@ struct MergedValleys
   std::size_t cells = 0;
   /** \brief Smallest radius among them, rings (0 when there are none). */
   int deepest = 0;
-  /** \brief Cells of the largest 6-connected group of them (a merged crease is a line
-   * of them; the bumps of a rough band are scattered). */
-  std::size_t largest = 0;
 };
 
 /** \brief Largest radius of a merged valley's cell, rings. Measured 2026-12-07 at 256
