@@ -1,5 +1,6 @@
 // Segmentation modes and parameters, fast: the paper's raw mode on a small cube keeps
-// exactly its cores, and out-of-range parameters are refused by name.
+// exactly its cores, out-of-range parameters are refused by name, and the result does
+// not depend on the number of threads.
 
 #include <support/cad_models.h>
 #include <support/synthetic_shapes.h>
@@ -85,6 +86,64 @@ TEST(SegmentationParameters, OutOfRangeIsRejectedByName)
   p = {};
   p.components.min_radius = 17; // above the cap of 16
   EXPECT_TRUE(rejects(p, "min_radius"));
+  p = {};
+  p.threads = -1;
+  EXPECT_TRUE(rejects(p, "threads -1 is out of range [0, 1024] (0 = all available)"));
+  p.threads = 1025;
+  EXPECT_TRUE(rejects(p, "threads 1025 is out of range"));
+}
+
+/** The generated cube (seed 3) at 128 cells through the estimator, `threads`
+ * threads. */
+pcl::PointCloud<visfeat::PointVisibility>
+cubeLabels(
+  int threads,
+  visfeat::VisibilityFeatureEstimation<pcl::PointXYZ, visfeat::PointVisibility>& est)
+{
+  const synthetic::CadModel model =
+    synthetic::rotated(synthetic::cadModelByName("cube"), synthetic::randomRotation(3));
+  synthetic::SamplingOptions options;
+  options.count = synthetic::samplesForSpacing(model, 128, 0.5);
+  const synthetic::CadSamples samples = synthetic::sampleCadModel(model, options);
+  auto cloud = std::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
+  for (const auto& p : samples.points)
+    cloud->push_back(pcl::PointXYZ(p.x(), p.y(), p.z()));
+  est.setInputCloud(cloud);
+  est.setResolution(128);
+  est.setNumberOfThreads(static_cast<unsigned int>(threads));
+  pcl::PointCloud<visfeat::PointVisibility> out;
+  est.compute(out);
+  return out;
+}
+
+TEST(SegmentationThreads, ResultIsTheSameForAnyCount)
+{
+  // The per-core dilations (vertex test, edge joining) run on threads: the labels must
+  // not depend on how many.
+  visfeat::VisibilityFeatureEstimation<pcl::PointXYZ, visfeat::PointVisibility> one,
+    two;
+  const auto a = cubeLabels(1, one);
+  const auto b = cubeLabels(2, two);
+  ASSERT_EQ(a.size(), b.size());
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    ASSERT_EQ(a[i].label, b[i].label) << "point " << i;
+    ASSERT_EQ(a[i].feature_class, b[i].feature_class) << "point " << i;
+  }
+  const auto& band = one.getVoxelBand();
+  const auto& map = one.getVisibilityMap();
+  visfeat::SegmentationParameters p = one.getSegmentationParameters();
+  p.threads = 1;
+  const auto serial = visfeat::FeatureSegmentation::compute(band, map, p);
+  ASSERT_EQ(serial.classCounts()[1], 8u); // vertices: the dilations ran
+  for (const int threads : {2, 3, 0}) {
+    p.threads = threads;
+    const auto parallel = visfeat::FeatureSegmentation::compute(band, map, p);
+    EXPECT_EQ(parallel.cellLabels(), serial.cellLabels()) << threads << " threads";
+    EXPECT_EQ(parallel.skeleton(), serial.skeleton()) << threads << " threads";
+    ASSERT_EQ(parallel.regions().size(), serial.regions().size());
+    for (std::size_t r = 0; r < serial.regions().size(); ++r)
+      EXPECT_EQ(parallel.regions()[r].cells, serial.regions()[r].cells);
+  }
 }
 
 } // namespace

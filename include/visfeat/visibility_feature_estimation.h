@@ -341,7 +341,8 @@ public:
   inline void setBandRepair(bool repair) { band_options_.repair = repair; }
   inline bool getBandRepair() const { return band_options_.repair; }
 
-  /** \brief Threads for the smoothing and the visibility map; 0 (default) = all
+  /** \brief Threads for the smoothing, the visibility map and the segmentation (and the
+   * parallel steps of the band and the graph); 0 (default) = all
    * available; at most VisibilityMap::kMaxThreads. Results are identical for any
    * count. */
   inline void setNumberOfThreads(unsigned int threads)

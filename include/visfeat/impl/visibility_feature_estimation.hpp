@@ -137,6 +137,7 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::prepare() const
   run.visibility.threads = threads_;
   VisibilityMap::validate(run.visibility);
   run.segmentation = getSegmentationParameters();
+  run.segmentation.threads = threads_;
   run.segmentation.validate(run.visibility.max_radius);
   run.crease_angles = crease_angles_;
   run.crease_angles.validate();

@@ -215,10 +215,22 @@ findVertices(SegmentationState& state)
   const auto reach = static_cast<std::uint32_t>(state.parameters.vertex_reach);
   const auto vertex_max =
     static_cast<std::uint32_t>(state.parameters.components.vertex_max_cells);
+  std::vector<std::uint32_t> small;
   for (std::uint32_t l = 1; l <= state.labelCount(); ++l)
     if (state.cores[l - 1].feature_class != FeatureClass::kFace &&
         state.cores[l - 1].cells <= vertex_max && !state.core_cells[l].empty())
-      state.reached[l] = state.coresWithin(l, state.core_cells[l], reach);
+      small.push_back(l);
+  // and the edges' joining reach (joinEdgeFragments()), on the same threads
+  std::vector<std::uint32_t> labels = small, steps(small.size(), reach);
+  for (const auto& [l, faces] : state.signature)
+    if (state.cls[l] == FeatureClass::kEdge && !state.core_cells[l].empty()) {
+      labels.push_back(l);
+      steps.push_back(joinSteps(state.parameters));
+    }
+  std::vector<std::set<std::uint32_t>> reached = state.coresWithin(labels, steps);
+  for (std::size_t i = 0; i < labels.size(); ++i)
+    (i < small.size() ? state.reached : state.edge_reach)[labels[i]] =
+      std::move(reached[i]);
   const std::vector<Eigen::Vector3d> centroid = coreCentroids(state);
   for (std::uint32_t l = 1; l <= state.labelCount(); ++l)
     if (state.reached.count(l) && !insideAnEdge(state, centroid, l) &&

@@ -10,13 +10,6 @@ namespace visfeat {
 namespace segmentation {
 namespace {
 
-/** A path of 6-steps is up to sqrt(3) times longer than the straight gap it spans
- * (the diagonal of a cube of cells), so the band is searched this many times
- * join_distance steps wide. Geometry, not tuning; before it, an edge at an angle to
- * the grid joined shorter gaps than one along it (triangular prism seed 2 at sigma
- * 0.32, 256: 10 edges for 9). */
-const double kLatticePathFactor = std::sqrt(3.0);
-
 /** Both labels are edges of the same two faces. */
 bool
 sameFacePair(const SegmentationState& state, std::uint32_t a, std::uint32_t b)
@@ -41,19 +34,17 @@ gapWithin(const SegmentationState& state, std::uint32_t a, std::uint32_t b)
 }
 
 /** Per edge label with core cells, the edges of its face pair whose cores lie within
- * join_distance cells of its own and kLatticePathFactor * join_distance steps through
- * the band. */
+ * join_distance cells of its own and joinSteps() 6-steps through the band (found in
+ * edge_reach). */
 std::map<std::uint32_t, std::set<std::uint32_t>>
-nearbyPiecesOfEdges(SegmentationState& state)
+nearbyPiecesOfEdges(const SegmentationState& state)
 {
-  const auto join_steps = static_cast<std::uint32_t>(std::ceil(
-    kLatticePathFactor * static_cast<double>(state.parameters.join_distance)));
   std::map<std::uint32_t, std::set<std::uint32_t>> edge_reach;
   for (const auto& [l, own] : state.signature) {
     if (state.cls[l] != FeatureClass::kEdge || state.core_cells[l].empty())
       continue;
     std::set<std::uint32_t> near;
-    for (const std::uint32_t m : state.coresWithin(l, state.core_cells[l], join_steps))
+    for (const std::uint32_t m : state.edge_reach.at(l))
       if (const auto other = state.signature.find(m); other != state.signature.end() &&
                                                       other->second == own &&
                                                       gapWithin(state, l, m))
@@ -159,6 +150,19 @@ joinOnOneLine(SegmentationState& state)
 }
 
 } // namespace
+
+std::uint32_t
+joinSteps(const SegmentationParameters& parameters)
+{
+  // A path of 6-steps is up to sqrt(3) times longer than the straight gap it spans
+  // (the diagonal of a cube of cells), so the band is searched this many times
+  // join_distance steps wide. Geometry, not tuning; before it, an edge at an angle to
+  // the grid joined shorter gaps than one along it (triangular prism seed 2 at sigma
+  // 0.32, 256: 10 edges for 9).
+  const double lattice_path_factor = std::sqrt(3.0);
+  return static_cast<std::uint32_t>(
+    std::ceil(lattice_path_factor * static_cast<double>(parameters.join_distance)));
+}
 
 void
 joinEdgeFragments(SegmentationState& state)

@@ -12,6 +12,7 @@ SegmentationParameters::validate(int max_radius) const
   checkRange("join_distance", join_distance, kJoinDistanceRange, "cells");
   checkRange("feature_width", feature_width, kFeatureWidthRange, "cells");
   checkRange("min_piece_cells", min_piece_cells, kMinPieceCellsRange, "cells");
+  checkRange("threads", threads, kThreadsRange, "0 = all available");
 }
 
 } // namespace visfeat

@@ -1,8 +1,10 @@
 #include "segmentation_state.h"
 
 #include <visfeat/core/band/band_pieces.h>
+#include <visfeat/core/common/threads.h>
 
 #include <limits>
+#include <mutex>
 
 namespace visfeat {
 namespace segmentation {
@@ -22,7 +24,6 @@ SegmentationState::SegmentationState(const VoxelBand& band_,
     , face_count(cores.size() + 1, 0)
     , speck_into(cores.size() + 1, 0)
     , speck(cores.size() + 1, 0)
-    , dilation(band_)
 {
   // Outlier clusters: small band pieces get no label at all.
   const std::vector<std::uint32_t> piece = bandPieceSizes(band);
@@ -33,17 +34,35 @@ SegmentationState::SegmentationState(const VoxelBand& band_,
     cls[l + 1] = cores[l].feature_class;
 }
 
-std::set<std::uint32_t>
-SegmentationState::coresWithin(std::uint32_t l,
-                               const std::vector<CellId>& cells,
-                               std::uint32_t steps)
+std::vector<std::set<std::uint32_t>>
+SegmentationState::coresWithin(const std::vector<std::uint32_t>& labels,
+                               const std::vector<std::uint32_t>& steps)
 {
-  std::set<std::uint32_t> met;
-  dilation.run(cells, steps, [&](CellId c) {
-    const std::uint32_t other = core_of[static_cast<std::size_t>(c)];
-    if (other != 0 && other != l)
-      met.insert(other);
-  });
+  std::vector<std::set<std::uint32_t>> met(labels.size());
+  std::mutex mutex; // guards `dilations`: a chunk takes one, then gives it back
+  parallelFor(labels.size(), parameters.threads, 1,
+              [&](std::size_t begin, std::size_t end) {
+                std::unique_ptr<BandDilation> dilation;
+                {
+                  const std::lock_guard<std::mutex> lock(mutex);
+                  if (!dilations.empty()) {
+                    dilation = std::move(dilations.back());
+                    dilations.pop_back();
+                  }
+                }
+                if (!dilation)
+                  dilation = std::make_unique<BandDilation>(band);
+                for (std::size_t i = begin; i < end; ++i) {
+                  const std::uint32_t l = labels[i];
+                  dilation->run(core_cells[l], steps[i], [&](CellId c) {
+                    const std::uint32_t other = core_of[static_cast<std::size_t>(c)];
+                    if (other != 0 && other != l)
+                      met[i].insert(other);
+                  });
+                }
+                const std::lock_guard<std::mutex> lock(mutex);
+                dilations.push_back(std::move(dilation));
+              });
   return met;
 }
 

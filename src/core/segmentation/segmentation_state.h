@@ -17,6 +17,7 @@
 #include <array>
 #include <cstdint>
 #include <map>
+#include <memory>
 #include <set>
 #include <utility>
 #include <vector>
@@ -94,16 +95,24 @@ struct SegmentationState
   /** \brief Per small core (<= vertex_max_cells, not a face), the other cores its
    * geodesic dilation reaches within vertex_reach. */
   std::map<std::uint32_t, std::set<std::uint32_t>> reached;
-  /** \brief Scratch of the geodesic dilations (reused between runs). */
-  BandDilation dilation;
+  /** \brief Per edge core after classifyByFaces() (class kEdge, with a signature), the
+   * other cores within joinSteps() 6-steps of it: the joining's reach, found with the
+   * vertex test's in findVertices() so that both share one team of threads. */
+  std::map<std::uint32_t, std::set<std::uint32_t>> edge_reach;
+  /** \brief Scratch of the geodesic dilations, one per thread at work (reused between
+   * runs). */
+  std::vector<std::unique_ptr<BandDilation>> dilations;
 
   /** \brief The number of core labels. */
   std::uint32_t labelCount() const { return static_cast<std::uint32_t>(cores.size()); }
 
-  /** \brief The other cores (core_of, outliers included) within `steps` 6-steps
-   * through the band of `cells` (label l's own cells). */
-  std::set<std::uint32_t>
-  coresWithin(std::uint32_t l, const std::vector<CellId>& cells, std::uint32_t steps);
+  /** \brief Per label of `labels`, the other cores (core_of, outliers included) within
+   * steps[i] 6-steps through the band of its core cells (core_cells). The labels are
+   * independent: they run on parameters.threads threads, the result the same for any
+   * count. */
+  std::vector<std::set<std::uint32_t>>
+  coresWithin(const std::vector<std::uint32_t>& labels,
+              const std::vector<std::uint32_t>& steps);
 };
 
 /** \brief The ends of an edge's cores and the vertex each links to. */

@@ -32,7 +32,8 @@ void classifyByFaces(SegmentationState& state);
  * it or what it meets touches three faces; but never when pieces of its own edge lie
  * on opposite sides of it (insideAnEdge). An accepted candidate absorbs the small cores
  * it reaches; all become vertices, and candidates within reach of each other are one
- * set (one corner). */
+ * set (one corner). Also finds the edges' joining reach (edge_reach, read by
+ * joinEdgeFragments()): both dilations run core by core on parameters.threads. */
 void findVertices(SegmentationState& state);
 
 /** \brief Step 3, specks: each speck joins its neighbour's set; sets left of specks
@@ -46,8 +47,14 @@ void mergeSpecks(SegmentationState& state);
  * they touch, when their cores are within join_distance cells (and sqrt(3) times as
  * many 6-steps through the band), when they touch the same vertex, or, when nothing
  * else joins, when both are straight and on one line (any gap; join_distance 0 turns
- * this off too). Touching vertex sets join. Repeats until nothing changes. */
+ * this off too). Touching vertex sets join. Repeats until nothing changes. Runs after
+ * findVertices() (its edge_reach). */
 void joinEdgeFragments(SegmentationState& state);
+
+/** \brief How far the joining searches the band from an edge's cores: sqrt(3) x
+ * join_distance 6-steps, rounded up (a path of 6-steps is up to sqrt(3) times longer
+ * than the straight gap it spans). */
+std::uint32_t joinSteps(const SegmentationParameters& parameters);
 
 /** \brief Step 4, corners: two corners share at most one edge, so vertex candidates
  * whose reached edges share two or more are one vertex. Repeats until nothing changes.

@@ -57,6 +57,11 @@ struct SegmentationParameters
    * label). Default 1.0 (kNoisePointFeatureDistance = 1.25 in the estimator's noise
    * mode), range kPointFeatureDistanceRange. */
   double point_feature_distance = 1.0;
+  /** \brief OpenMP threads of the steps that run core by core (the geodesic
+   * dilations of the vertex test and of the edges' joining); 0 (default) = all
+   * available (OpenMP's default). The result does not depend on it. Range
+   * kThreadsRange. The estimator sets it from setNumberOfThreads(). */
+  int threads = 0;
 
   /** \brief point_feature_distance of the noise mode: with the noise left along the
    * surface after smoothing, feature points keep the same 2-cell bound (cells). */
@@ -72,6 +77,8 @@ struct SegmentationParameters
   static constexpr ParameterRange<int> kFeatureWidthRange{0, 1000};
   /** \brief [0, 10] cells. */
   static constexpr ParameterRange<double> kPointFeatureDistanceRange{0.0, 10.0};
+  /** \brief [0, 1024], 0 = all available (VisibilityMap::kMaxThreads). */
+  static constexpr ParameterRange<int> kThreadsRange{0, VisibilityMap::kMaxThreads};
 
   /** \brief Throws visfeat::Error naming the first parameter out of range, with its
    * value, range and unit (components first, see ComponentParameters::validate;
