@@ -109,12 +109,13 @@ manyMergedValleys(const Results& results, const SegmentationParameters& segmenta
   if (segmentation.raw || !segmentation.complete_regions)
     return {};
   const int min_radius = segmentation.components.min_radius;
-  const MergedValleys valleys =
-    mergedValleys(results.band, results.map, results.segmentation,
-                  mergedValleyRadius(min_radius), min_radius / 2);
+  const MergedValleys valleys = mergedValleys(
+    results.band, results.map, results.segmentation, mergedValleyRadius(min_radius),
+    min_radius / 2, valleyLineRadius(min_radius));
   const auto enough = static_cast<std::size_t>(kMergedValleyCoreAreas) *
                       static_cast<std::size_t>(min_radius * min_radius);
-  return valleys.cells >= enough ? valleys : MergedValleys{};
+  const bool line = valleys.longest_line >= kValleyLineMinRadii * min_radius;
+  return valleys.cells >= enough || line ? valleys : MergedValleys{};
 }
 
 /** \brief The merged valleys in words, e.g. "1426 face cells in valleys of the map
@@ -123,11 +124,18 @@ manyMergedValleys(const Results& results, const SegmentationParameters& segmenta
 inline std::string
 describeMergedValleys(const MergedValleys& valleys, int min_radius)
 {
+  const std::string far =
+    " more than " + std::to_string(min_radius / 2) + " cells from any edge or vertex";
+  const auto enough = static_cast<std::size_t>(kMergedValleyCoreAreas) *
+                      static_cast<std::size_t>(min_radius * min_radius);
+  if (valleys.cells < enough) // a line only
+    return "a line of face cells in a valley of the map (radius " +
+           std::to_string(valleyLineRadius(min_radius)) + " rings or less), " +
+           std::to_string(std::lround(valleys.longest_line)) + " cells long and " +
+           std::to_string(std::lround(valleys.line_width)) + " wide," + far;
   return std::to_string(valleys.cells) + " face cells in valleys of the map (radius " +
          std::to_string(mergedValleyRadius(min_radius)) +
-         " rings or less, the deepest " + std::to_string(valleys.deepest) +
-         ") more than " + std::to_string(min_radius / 2) +
-         " cells from any edge or vertex";
+         " rings or less, the deepest " + std::to_string(valleys.deepest) + ")" + far;
 }
 
 /** \brief Where faces hold creases merged into them (manyMergedValleys()), a warning
@@ -138,7 +146,7 @@ void
 warnMergedValleys(const Results& results, Run& run, int max_search_resolution)
 {
   const MergedValleys valleys = manyMergedValleys(results, run.segmentation);
-  if (valleys.cells == 0)
+  if (!valleys.any())
     return;
   const int min_radius = run.segmentation.components.min_radius;
   const int resolution = run.resolution.resolution;

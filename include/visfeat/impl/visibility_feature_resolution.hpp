@@ -263,7 +263,7 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::searchResolution(
         // creases merged into faces, which leave the graph closed (any input)
         const MergedValleys valleys =
           detail::manyMergedValleys(results, run.segmentation);
-        if (valleys.cells == 0)
+        if (!valleys.any())
           break;
         found << detail::describeMergedValleys(valleys, min_radius) << " at resolution "
               << current << " (creases merged into faces)";
