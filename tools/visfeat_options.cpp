@@ -149,7 +149,8 @@ printHelp(const char* program)
   print_info(" with -noise_mode; %g-%g cells)\n",
              visfeat::SmoothingParameters::kRadiusRange.min,
              visfeat::SmoothingParameters::kRadiusRange.max);
-  print_info("    -threads T        = threads of the visibility map (default: ");
+  print_info("    -threads T        = threads of the visibility map and the "
+             "segmentation (default: ");
   print_value("%d", kDefaultThreads);
   print_info(" = all)\n");
   print_info("    -no_repair        = do not add cells to make the band "
