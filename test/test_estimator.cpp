@@ -6,6 +6,7 @@
 #include "band_fixtures.h"
 #include "reference/brute_force.h"
 #include "shuffled_cloud.h"
+#include <support/cad_models.h>
 #include <support/portable_random.h>
 
 #include <visfeat/point_types.h>
@@ -427,6 +428,70 @@ TEST(EstimatorBadInput, OnePoint)
   expectErrorMessage(est, coincide);
   est.setResolution(0); // automatic: the same message
   expectErrorMessage(est, coincide);
+}
+
+TEST(EstimatorBadInput, TooFewPointsForOneFace)
+{
+  // A face spans 2 min_radius cells each way and the fill bridges at most 4 cells a
+  // point spacing: fewer than (2 * 16 / 4)^2 = 64 points hold no face at any
+  // resolution (3 points gave an empty result and advice to sample denser at 4).
+  namespace syn = visfeat::synthetic;
+  const syn::CadModel cube = syn::cadModelByName("cube");
+  const auto sample = [&](std::size_t count) {
+    syn::SamplingOptions options;
+    options.count = count;
+    options.seed = 5;
+    Cloud::Ptr cloud(new Cloud);
+    for (const Eigen::Vector3f& p : syn::sampleCadModel(cube, options).points)
+      cloud->push_back(pcl::PointXYZ(p.x(), p.y(), p.z()));
+    return cloud;
+  };
+  ASSERT_EQ(visfeat::minimumCloudPoints(16), 64u);
+  const Cloud::Ptr few = sample(63);
+  for (const int resolution : {Estimator::kAutomaticResolution, 64}) {
+    Estimator est;
+    est.setInputCloud(few);
+    est.setResolution(resolution);
+    expectErrorMessage(
+      est,
+      "only 63 finite points: too few for one face (a face spans 2 min_radius = 32 "
+      "cells each way, and the band is filled over at most 4 cells a point "
+      "spacing: at least 64 points); sample denser, or give the surface as a mesh "
+      "(setInputMesh())");
+  }
+  // NaNs do not count
+  Cloud::Ptr with_nan(new Cloud(*sample(64)));
+  with_nan->points[7].x = kNaN;
+  with_nan->is_dense = false;
+  Estimator est;
+  est.setInputCloud(with_nan);
+  expectError(est, {"only 63 finite points"});
+  // 64 points pass the check (the result is another matter)
+  Estimator enough;
+  enough.setInputCloud(sample(64));
+  enough.setResolution(64);
+  Output out;
+  enough.compute(out);
+  EXPECT_EQ(enough.getErrorMessage(), "");
+  EXPECT_EQ(out.size(), 64u);
+  // the floor follows min_radius: at 8, 16 points
+  EXPECT_EQ(visfeat::minimumCloudPoints(8), 16u);
+  Estimator smaller;
+  smaller.setInputCloud(few);
+  smaller.setResolution(64);
+  smaller.setMinRadius(8);
+  smaller.compute(out);
+  EXPECT_EQ(smaller.getErrorMessage(), "");
+  // a mesh gives the band: few output points on it are fine
+  auto mesh =
+    std::make_shared<visfeat::SurfaceMesh>(syn::tessellateCadModel(cube, 0.01).mesh);
+  Estimator meshed;
+  meshed.setInputCloud(few);
+  meshed.setInputMesh(mesh);
+  meshed.setResolution(64);
+  meshed.compute(out);
+  EXPECT_EQ(meshed.getErrorMessage(), "");
+  EXPECT_EQ(meshed.getSegmentation().classCounts()[3], 6u) << "the cube's faces";
 }
 
 TEST(EstimatorBadInput, ResolutionOutOfRange)

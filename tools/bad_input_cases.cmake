@@ -24,6 +24,7 @@ set(VISFEAT_BAD_INPUT_CASES
   "only_nan|no finite point: all 3 points have a NaN"
   "single_point|single finite point"
   "coincident_points|all finite points coincide"
+  "too_few_points|only 3 finite points: too few for one face&&at least 64 points"
   "collinear|lie on a line (collinear)"
   "thinner_than_cells|cells of a line at resolution 8"
   "arguments_missing|expected an input"

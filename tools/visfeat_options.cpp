@@ -362,6 +362,7 @@ inToolTerms(std::string message)
   static const std::pair<const char*, const char*> kTerms[] = {
     {"call setInputMesh() first",
      "give a mesh (.obj, .off, .stl, or .ply with faces) as input"},
+    {"as a mesh (setInputMesh())", "as a mesh (.obj, .off, .stl, or .ply with faces)"},
     {"setResolution()", "-resolution"},
     {"setMaxSearchResolution()", "-max_search_resolution"},
     {"setSurfaceFill()", "-fill"},

@@ -8,6 +8,7 @@
 
 #include <pcl/point_cloud.h>
 
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -64,6 +65,22 @@ constexpr int kTopologyResolution = 256;
  * automatic resolution stays at or below extent / spacing times this): the fill
  * rounds creases by about a spacing, which must stay well below 2 min_radius cells. */
 constexpr double kMaxFillCellsPerSpacing = 4.0;
+
+/** \brief Fewest finite points a cloud needs where its points give the band (any fill
+ * but a mesh's): a face is found from a core of cells min_radius rings from its
+ * creases, so it spans at least 2 min_radius cells each way, and a fill bridges at most
+ * kMaxFillCellsPerSpacing cells a point spacing: (2 min_radius /
+ * kMaxFillCellsPerSpacing)^2 points, 64 at the defaults. Fewer cannot hold one face at
+ * any resolution (3 points gave an empty result with a warning that advised sampling
+ * denser at resolution 4). */
+constexpr std::size_t
+minimumCloudPoints(int min_radius)
+{
+  const auto across = static_cast<std::size_t>(
+    (2.0 * static_cast<double>(min_radius) + kMaxFillCellsPerSpacing - 1.0) /
+    kMaxFillCellsPerSpacing); // rounded up
+  return across * across;
+}
 
 /** \brief The automatic resolution is raised for a fill only by at least this factor:
  * a dense cloud whose points support 238 cells was filled to reach 256, which cost

@@ -58,7 +58,8 @@ namespace visfeat {
  *
  * compute() refuses, with a one-line getErrorMessage() and a PCL_ERROR, a missing or
  * empty cloud, clouds without a surface (no finite point, one point, all points
- * coincident or collinear, or within 2 cells of a line at the resolution), parameters
+ * coincident or collinear, or within 2 cells of a line at the resolution), clouds too
+ * small for one face where the points give the band (minimumCloudPoints()), parameters
  * out of range (the message names the parameter, its value, range and unit), grids
  * over the memory limit, and any exception of the pipeline (visfeat::Error,
  * std::bad_alloc, std::exception). A failed compute() leaves every result getter as it

@@ -168,6 +168,20 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::prepare() const
   std::string problem = shapeProblem(shape, 0);
   if (!problem.empty())
     throw Error(problem);
+  // too small for one face (no finite point, one point or all coincident: the grid
+  // says so)
+  const bool band_from_mesh = mesh_ && (surface_fill_ == SurfaceFill::kAuto ||
+                                        surface_fill_ == SurfaceFill::kMesh);
+  const std::size_t fewest = minimumCloudPoints(run.segmentation.components.min_radius);
+  if (!band_from_mesh && hasExtent(shape) && shape.finite < fewest) {
+    std::ostringstream msg;
+    msg << "only " << shape.finite << " finite points: too few for one face (a face "
+        << "spans 2 min_radius = " << 2 * run.segmentation.components.min_radius
+        << " cells each way, and the band is filled over at most "
+        << int(kMaxFillCellsPerSpacing) << " cells a point spacing: at least " << fewest
+        << " points); sample denser, or give the surface as a mesh (setInputMesh())";
+    throw Error(msg.str());
+  }
   const int resolution = chooseResolution(shape, run);
   problem = shapeProblem(shape, resolution);
   if (!problem.empty())
