@@ -163,6 +163,8 @@ TEST(MergedValleys, ShallowParallelCreasesLeaveALine)
         << warnings.front();
       EXPECT_TRUE(mentions(warnings.front(), "were merged into faces"))
         << warnings.front();
+      EXPECT_TRUE(mentions(warnings.front(), "raise the resolution, e.g. to 512"))
+        << warnings.front();
       ++line_warnings;
     }
   }

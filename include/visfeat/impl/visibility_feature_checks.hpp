@@ -43,6 +43,17 @@ constexpr const char* kHolesFirst =
 
 /** \brief The way on where the automatic search stopped at its maximum (narrow faces
  * or a closed mesh's graph gaps left): the setter and its value. */
+/** ", e.g. to 2R" after "raise the resolution" (the search's own step), or "" at the
+ * largest resolution. */
+inline std::string
+finerExample(int resolution)
+{
+  if (resolution >= GridSpec::kMaxResolution)
+    return "";
+  return ", e.g. to " +
+         std::to_string(std::min(2 * resolution, GridSpec::kMaxResolution));
+}
+
 inline std::string
 searchFurtherAdvice(int max_search_resolution)
 {
@@ -158,10 +169,10 @@ warnMergedValleys(const Results& results, Run& run, int max_search_resolution)
   if (atPointsCap(run))
     w << "sample denser: resolution " << resolution << " is " << run.search_cap_reason;
   else if (run.search_cap > 0 && run.search_cap_reason == kSearchLimitReason)
-    w << "raise the resolution (setResolution(), or "
+    w << "raise the resolution" << finerExample(resolution) << " (setResolution(), or "
       << searchFurtherAdvice(max_search_resolution) << ")";
   else
-    w << "raise the resolution";
+    w << "raise the resolution" << finerExample(resolution);
   run.warnings.push_back(w.str());
 }
 
@@ -231,7 +242,7 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::checkResults(const Results& re
       if (run.fill == SurfaceFill::kPoints && run.resolution.spacing > 0.0)
         w << " and fill the band between the points (fill 'triangles')";
       w << ", or lower min_radius";
-      if (!noise_mode_)
+      if (!noise_mode_ && run.fill != SurfaceFill::kMesh) // a mesh's band has no noise
         w << kNoisyScanAdvice;
     }
     run.warnings.push_back(w.str());
@@ -249,7 +260,7 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::checkResults(const Results& re
       w << detail::kHolesFirst;
     } else {
       w << "raise the resolution";
-      if (!noise_mode_)
+      if (!noise_mode_ && run.fill != SurfaceFill::kMesh)
         w << kNoisyScanAdvice;
     }
     run.warnings.push_back(w.str());
@@ -337,7 +348,7 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::checkGraph(const Results& resu
     w << "sample denser: resolution " << run.resolution.resolution << " is "
       << run.search_cap_reason;
   else
-    w << "raise the resolution";
+    w << "raise the resolution" << detail::finerExample(run.resolution.resolution);
   if (mesh_closed_ && run.search_cap > 0 &&
       run.search_cap_reason == detail::kSearchLimitReason)
     w << " (setResolution(), or " << detail::searchFurtherAdvice(max_search_resolution_)
