@@ -2,7 +2,8 @@
 // surface labelled by its faces, edges and corners has none; the same box with one
 // corner relabelled as face, or a face cut off from the rest, has them; an edge with
 // the same face on both sides and a free end (a crease fading into its face) is
-// counted apart.
+// counted apart; two corners merged across a short edge leave a corner whose edges
+// leave it side by side.
 
 #include "band_fixtures.h"
 
@@ -34,13 +35,13 @@ struct LabelledBox
   std::vector<FeatureClass> classes;
   std::map<std::array<int, 3>, std::uint32_t> ids; // extremes signature -> label
 
-  LabelledBox()
+  explicit LabelledBox(int sx = 10, int sy = 8, int sz = 5)
   {
-    const visfeat_test::CellBand box = visfeat_test::hollowBox(10, 8, 5);
+    const visfeat_test::CellBand box = visfeat_test::hollowBox(sx, sy, sz);
     VoxelBand::Options options;
     options.repair = false;
     band = VoxelBand::fromCells(box.grid, box.cells, options);
-    visfeat_test::BoxRegions regions = visfeat_test::hollowBoxRegions(band, 10, 8, 5);
+    visfeat_test::BoxRegions regions = visfeat_test::hollowBoxRegions(band, sx, sy, sz);
     labels = std::move(regions.labels);
     classes = std::move(regions.classes);
     ids = std::move(regions.ids);
@@ -139,6 +140,41 @@ TEST(GraphGaps, AnEdgeWithOneFaceOnBothSidesIsAFadingCreaseNotAGap)
             "on both sides: a crease fading into it)");
 }
 
+/** The box with its edge x = lo, y = lo (along z) and the corner at its z = hi end
+ * joined into the corner at its z = lo end: two corners merged into one, which ends the
+ * four other edges of both. */
+GraphGaps
+mergedCornerGaps(int sx, int sy, int sz)
+{
+  LabelledBox box(sx, sy, sz);
+  box.joinRegion(box.ids.at({-1, -1, 0}), box.ids.at({-1, -1, -1}));
+  box.joinRegion(box.ids.at({-1, -1, 1}), box.ids.at({-1, -1, -1}));
+  const TopologyGraph graph = box.graph();
+  EXPECT_EQ(graph.neighbours(box.ids.at({-1, -1, -1}), FeatureClass::kEdge).size(), 4u);
+  return visfeat::findGraphGaps(graph);
+}
+
+TEST(GraphGaps, CornersMergedAcrossAShortEdge)
+{
+  // the short edge (4 cells) between two corners vanishes into them: the graph is
+  // closed (11 edges, each between two faces and two corners), but two edges leave the
+  // merged corner side by side (19 and 23 degrees apart)
+  const GraphGaps merged = mergedCornerGaps(24, 20, 4);
+  EXPECT_EQ(merged.edges, 11u);
+  EXPECT_EQ(merged.one_corner, 0u);
+  EXPECT_EQ(merged.not_two_faces, 0u);
+  EXPECT_EQ(merged.lone_regions, 0u);
+  EXPECT_EQ(merged.merged_corners, 1u);
+  EXPECT_TRUE(merged.any());
+  EXPECT_EQ(merged.describe(), "1 corner ends 4 or more edges, two leaving within 25 "
+                               "degrees of each other (corners merged into one)");
+  // across an edge as long as the others, the four edges spread (53 degrees and more):
+  // a corner of 4 edges, as a pyramid's apex has, is not counted
+  const GraphGaps wide = mergedCornerGaps(10, 8, 5);
+  EXPECT_EQ(wide.merged_corners, 0u);
+  EXPECT_FALSE(wide.any());
+}
+
 TEST(GraphGaps, EdgesWithoutCornersAloneAreNoGap)
 {
   // a cylinder's rims are closed loops without corners
@@ -158,13 +194,15 @@ TEST(GraphGaps, EdgesWithoutCornersAloneAreNoGap)
   all.no_corner = 8;
   all.not_two_faces = 1;
   all.lone_regions = 2;
+  all.merged_corners = 2;
   all.one_face = 2;
   EXPECT_TRUE(all.any());
   EXPECT_EQ(all.describe(),
             "11 of 28 edges end at a corner on one side only and 8 more at "
             "neither, 1 edge does not lie between two faces, 2 regions "
-            "touch no other (2 more edges have one face on both sides: creases "
-            "fading into it)");
+            "touch no other, 2 corners end 4 or more edges, two leaving within 25 "
+            "degrees of each other (corners merged into one) (2 more edges have one "
+            "face on both sides: creases fading into it)");
   GraphGaps fading = loops;
   fading.one_face = 3;
   EXPECT_FALSE(fading.any());

@@ -1,9 +1,39 @@
 #include <visfeat/core/graph/graph_gaps.h>
 
+#include <cmath>
 #include <sstream>
 #include <vector>
 
 namespace visfeat {
+
+namespace {
+
+/** Whether two of the corner's edges leave it within kMergedCornerAngle of each other
+ * (the corner has at least kMergedCornerEdges). */
+bool
+isMergedCorner(const TopologyGraph& graph, std::uint32_t vertex)
+{
+  const std::vector<std::uint32_t> edges =
+    graph.neighbours(vertex, FeatureClass::kEdge);
+  if (edges.size() < kMergedCornerEdges)
+    return false;
+  const Eigen::Vector3d& at = graph.node(vertex).centroid;
+  std::vector<Eigen::Vector3d> directions;
+  for (const std::uint32_t e : edges) {
+    const Eigen::Vector3d d = graph.node(e).centroid - at;
+    if (d.allFinite() && d.norm() > 0.0)
+      directions.push_back(d.normalized());
+  }
+  const double cos_limit =
+    std::cos(kMergedCornerAngle * 3.14159265358979323846 / 180.0);
+  for (std::size_t i = 0; i < directions.size(); ++i)
+    for (std::size_t j = i + 1; j < directions.size(); ++j)
+      if (directions[i].dot(directions[j]) > cos_limit)
+        return true;
+  return false;
+}
+
+} // namespace
 
 GraphGaps
 findGraphGaps(const TopologyGraph& graph)
@@ -12,6 +42,9 @@ findGraphGaps(const TopologyGraph& graph)
   for (std::uint32_t id = 1; id <= graph.size(); ++id) {
     if (graph.size() > 1 && graph.neighbours(id).empty())
       ++gaps.lone_regions;
+    if (graph.node(id).feature_class == FeatureClass::kVertex &&
+        isMergedCorner(graph, id))
+      ++gaps.merged_corners;
     if (graph.node(id).feature_class != FeatureClass::kEdge)
       continue;
     ++gaps.edges;
@@ -48,9 +81,16 @@ GraphGaps::describe() const
         << " not lie between two faces";
     sep = ", ";
   }
-  if (lone_regions > 0)
+  if (lone_regions > 0) {
     out << sep << lone_regions
         << (lone_regions == 1 ? " region touches" : " regions touch") << " no other";
+    sep = ", ";
+  }
+  if (merged_corners > 0)
+    out << sep << merged_corners
+        << (merged_corners == 1 ? " corner ends" : " corners end") << " "
+        << kMergedCornerEdges << " or more edges, two leaving within "
+        << kMergedCornerAngle << " degrees of each other (corners merged into one)";
   if (one_face > 0)
     out << " (" << one_face << " more " << (one_face == 1 ? "edge has" : "edges have")
         << " one face on both sides: " << (one_face == 1 ? "a crease" : "creases")
