@@ -101,7 +101,7 @@ TEST(MergedValleys, ThePlateWarnsWhereTheGraphLooksWhole)
   EXPECT_TRUE(std::any_of(
     warnings.begin(), warnings.end(),
     [](const std::string& w) { return mentions(w, "were merged into faces"); }))
-    << "the silent answer of before: " << visfeat_test::estimator::counts(est)[2]
+    << "the silent answer of before: " << visfeat_test::estimator::counts(est)[1]
     << " edges";
 }
 
@@ -147,9 +147,9 @@ TEST(MergedValleys, ShallowParallelCreasesLeaveALine)
     const visfeat::MergedValleys valleys = valleysOf(est);
     std::printf("parallel creases %d at 256: %zu/%zu/%zu, line %.1f cells long, %.1f "
                 "wide (%zu cells)\n",
-                static_cast<int>(seed), visfeat_test::estimator::counts(est)[1],
-                visfeat_test::estimator::counts(est)[2],
-                visfeat_test::estimator::counts(est)[3], valleys.longest_line,
+                static_cast<int>(seed), visfeat_test::estimator::counts(est)[0],
+                visfeat_test::estimator::counts(est)[1],
+                visfeat_test::estimator::counts(est)[2], valleys.longest_line,
                 valleys.line_width, valleys.line_cells);
     EXPECT_GE(valleys.longest_line, long_enough) << "rotation " << seed;
     EXPECT_GE(valleys.longest_line, 4.0 * std::max(wide, 1.0)) << "rotation " << seed;
