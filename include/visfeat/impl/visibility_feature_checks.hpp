@@ -41,8 +41,6 @@ constexpr const char* kSpacingNotePrefix = "the points lie ";
 constexpr const char* kHolesFirst =
   "close the band's holes first (next warning): a finer resolution would leave more";
 
-/** \brief The way on where the automatic search stopped at its maximum (narrow faces
- * or a closed mesh's graph gaps left): the setter and its value. */
 /** ", e.g. to 2R" after "raise the resolution" (the search's own step), or "" at the
  * largest resolution. */
 inline std::string
@@ -54,6 +52,8 @@ finerExample(int resolution)
          std::to_string(std::min(2 * resolution, GridSpec::kMaxResolution));
 }
 
+/** \brief The way on where the automatic search stopped at its maximum (narrow faces
+ * or a closed mesh's graph gaps left): the setter and its value. */
 inline std::string
 searchFurtherAdvice(int max_search_resolution)
 {
@@ -123,10 +123,9 @@ manyMergedValleys(const Results& results, const SegmentationParameters& segmenta
   const MergedValleys valleys = mergedValleys(
     results.band, results.map, results.segmentation, mergedValleyRadius(min_radius),
     min_radius / 2, valleyLineRadius(min_radius));
-  const auto enough = static_cast<std::size_t>(kMergedValleyCoreAreas) *
-                      static_cast<std::size_t>(min_radius * min_radius);
   const bool line = valleys.longest_line >= kValleyLineMinRadii * min_radius;
-  return valleys.cells >= enough || line ? valleys : MergedValleys{};
+  return valleys.cells >= mergedValleyCoreCells(min_radius) || line ? valleys
+                                                                    : MergedValleys{};
 }
 
 /** \brief The merged valleys in words, e.g. "1426 face cells in valleys of the map
@@ -137,9 +136,7 @@ describeMergedValleys(const MergedValleys& valleys, int min_radius)
 {
   const std::string far =
     " more than " + std::to_string(min_radius / 2) + " cells from any edge or vertex";
-  const auto enough = static_cast<std::size_t>(kMergedValleyCoreAreas) *
-                      static_cast<std::size_t>(min_radius * min_radius);
-  if (valleys.cells < enough) // a line only
+  if (valleys.cells < mergedValleyCoreCells(min_radius)) // a line only
     return "a line of face cells in a valley of the map (radius " +
            std::to_string(valleyLineRadius(min_radius)) + " rings or less), " +
            std::to_string(std::lround(valleys.longest_line)) + " cells long and " +
@@ -199,6 +196,8 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::checkResults(const Results& re
   // the automatic resolution is already as fine as the points support: finer cells
   // need more points (or the fill, from the points alone)
   const bool at_points_cap = detail::atPointsCap(run);
+  // noise mode smooths points: no advice for a mesh's band, which has no noise
+  const bool scan_advice = !noise_mode_ && run.fill != SurfaceFill::kMesh;
   const auto denser = [&](std::ostream& out) {
     out << "sample denser: resolution " << resolution << " is "
         << run.search_cap_reason;
@@ -242,7 +241,7 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::checkResults(const Results& re
       if (run.fill == SurfaceFill::kPoints && run.resolution.spacing > 0.0)
         w << " and fill the band between the points (fill 'triangles')";
       w << ", or lower min_radius";
-      if (!noise_mode_ && run.fill != SurfaceFill::kMesh) // a mesh's band has no noise
+      if (scan_advice)
         w << kNoisyScanAdvice;
     }
     run.warnings.push_back(w.str());
@@ -260,7 +259,7 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::checkResults(const Results& re
       w << detail::kHolesFirst;
     } else {
       w << "raise the resolution";
-      if (!noise_mode_ && run.fill != SurfaceFill::kMesh)
+      if (scan_advice)
         w << kNoisyScanAdvice;
     }
     run.warnings.push_back(w.str());

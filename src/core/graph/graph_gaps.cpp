@@ -1,6 +1,7 @@
 #include <visfeat/core/graph/graph_gaps.h>
 
-#include <cmath>
+#include "../common/angles.h"
+
 #include <sstream>
 #include <vector>
 
@@ -24,8 +25,7 @@ isMergedCorner(const TopologyGraph& graph, std::uint32_t vertex)
     if (d.allFinite() && d.norm() > 0.0)
       directions.push_back(d.normalized());
   }
-  const double cos_limit =
-    std::cos(kMergedCornerAngle * 3.14159265358979323846 / 180.0);
+  const double cos_limit = detail::cosineOfDegrees(kMergedCornerAngle);
   for (std::size_t i = 0; i < directions.size(); ++i)
     for (std::size_t j = i + 1; j < directions.size(); ++j)
       if (directions[i].dot(directions[j]) > cos_limit)

@@ -74,6 +74,15 @@ mergedValleyRadius(int min_radius)
  * at 1024 12,221 (its plates 12-30 cells thick, parts 1-2 cells apart). */
 constexpr int kMergedValleyCoreAreas = 1;
 
+/** \brief The merged valley cells that say creases merged at this min_radius:
+ * kMergedValleyCoreAreas min_radius^2 (256 at the defaults). */
+constexpr std::size_t
+mergedValleyCoreCells(int min_radius)
+{
+  return static_cast<std::size_t>(kMergedValleyCoreAreas) *
+         static_cast<std::size_t>(min_radius) * static_cast<std::size_t>(min_radius);
+}
+
 /** \brief Largest radius of a valley line's cell (MergedValleys::longest_line) at
  * min_radius 16, rings. A crease shallower than about 45 degrees leaves no deep valley:
  * the cells on it see across it (the chord stays in the band), and its valley's floor,
