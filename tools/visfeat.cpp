@@ -340,8 +340,16 @@ printSummary(const Estimator& estimator, const vt::Options& opt)
   if (opt.resolution == 0) {
     print_info("Resolution ");
     print_value("%d", resolution.resolution);
-    print_info(" chosen: %s; -resolution overrides\n",
-               vt::inToolTerms(resolution.reason).c_str());
+    // one line a part: the first choice, then each step of the automatic search
+    const std::vector<std::string> parts =
+      vt::topLevelParts(vt::inToolTerms(resolution.reason));
+    if (parts.size() == 1)
+      print_info(" chosen: %s; -resolution overrides\n", parts.front().c_str());
+    else {
+      print_info(" chosen (-resolution overrides):\n");
+      for (const std::string& part : parts)
+        print_info("  %s\n", part.c_str());
+    }
   }
   print_info("Band from ");
   print_value("%s", visfeat::surfaceFillName(estimator.getSurfaceFillUsed()));

@@ -375,4 +375,26 @@ inToolTerms(std::string message)
   return message;
 }
 
+std::vector<std::string>
+topLevelParts(const std::string& text)
+{
+  std::vector<std::string> parts;
+  std::string part;
+  int depth = 0;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    depth += (c == '(' || c == '[') ? 1 : (c == ')' || c == ']') ? -1 : 0;
+    if (depth == 0 && c == ';' && i + 1 < text.size() && text[i + 1] == ' ') {
+      parts.push_back(part);
+      part.clear();
+      ++i; // the space after the separator
+      continue;
+    }
+    part += c;
+  }
+  if (!part.empty() || parts.empty())
+    parts.push_back(part);
+  return parts;
+}
+
 } // namespace visfeat_tools

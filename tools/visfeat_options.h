@@ -16,6 +16,7 @@
 
 #include <set>
 #include <string>
+#include <vector>
 
 namespace visfeat_tools {
 
@@ -83,5 +84,11 @@ bool readOptions(const Arguments& args, Options& options, std::string& error);
 /** \brief A message of the library in the tool's terms: its setters become the
  * options that set them (printed lines and the graph JSON). */
 std::string inToolTerms(std::string message);
+
+/** \brief The parts of `text` between the separators "; " that stand outside every
+ * bracket pair, (...) or [...]; the resolution's reason is a chain of such
+ * parts (the first choice, then each step of the automatic search), which the tool
+ * prints one a line. Unbalanced brackets leave the rest of the text one part. */
+std::vector<std::string> topLevelParts(const std::string& text);
 
 } // namespace visfeat_tools
