@@ -306,6 +306,40 @@ TEST(EstimatorFill, ACleanCloudTooSparseForItsPartIsCalledSparseNotNoisy)
     }
 }
 
+TEST(EstimatorFill, AFewHundredCleanPointsAreCalledSparseNotNoisy)
+{
+  // 64-200 noise-free points: every point's neighbourhood spans a crease, none lies
+  // flat, so the flat share cannot tell noise from the shape; below
+  // kNoiseReadablePoints the warnings read it as the shape (sample denser), never as
+  // noise (smooth the points, noise mode). Before, 64 points of a cube were told of
+  // "noise 0.97 cells" and to smooth them with pcl::MovingLeastSquares.
+  for (const char* name : {"cube", "icosahedron", "u_prism", "box_with_hole"})
+    for (const std::size_t count : {std::size_t{64}, std::size_t{150}}) {
+      const syn::CadModel model =
+        syn::rotated(syn::cadModelByName(name), syn::randomRotation(5));
+      syn::SamplingOptions options;
+      options.count = count;
+      options.seed = 5;
+      Estimator est;
+      est.setInputCloud(cloudOf(syn::sampleCadModel(model, options)));
+      est.setResolution(0);
+      Output out;
+      est.compute(out);
+      ASSERT_EQ(est.getErrorMessage(), "") << name << " " << count;
+      ASSERT_FALSE(est.getWarnings().empty()) << name << " " << count;
+      bool sparse = false, denser = false;
+      for (const std::string& w : est.getWarnings()) {
+        sparse = sparse || w.find("too sparse for the part") != std::string::npos;
+        denser = denser || w.find("sample denser") != std::string::npos;
+        EXPECT_EQ(w.find("noise mode"), std::string::npos) << name << " " << count << w;
+        EXPECT_EQ(w.find("MovingLeastSquares"), std::string::npos)
+          << name << " " << count << ": " << w;
+      }
+      EXPECT_TRUE(sparse) << name << " " << count << ": " << est.getWarnings().front();
+      EXPECT_TRUE(denser) << name << " " << count << ": " << est.getWarnings().front();
+    }
+}
+
 TEST(EstimatorFill, ABandTooCoarseForItsFeaturesWarns)
 {
   // the cube at 40 cells: faces of about 20 cells, no core reaches min_radius 16

@@ -202,6 +202,8 @@ struct FillReport
   /** \brief The share of the points whose neighbourhood lies flat (tangentPlanes()'
    * flat_share), or -1 when the noise was not measured. */
   double flat_share = -1.0;
+  /** \brief The finite points the noise was measured on (kNoiseReadablePoints). */
+  std::size_t points = 0;
 };
 
 /** \brief The cells of the umbrella triangles of a cloud's finite points

@@ -11,6 +11,7 @@
 #include <visfeat/core/segmentation/feature_segmentation.h>
 #include <visfeat/core/visibility/free_space.h>
 #include <visfeat/core/visibility/visibility_map.h>
+#include <visfeat/impl/estimation_run.h>
 #include <visfeat/phase_times.h>
 #include <visfeat/point_types.h>
 #include <visfeat/surface_fill.h>
@@ -442,40 +443,8 @@ protected:
   void computeFeature(PointCloudOut& output) override;
 
 private:
-  /** \brief What initCompute() settles for computeFeature(): resolved parameters,
-   * grid, resolution estimate, notes. */
-  struct Run
-  {
-    VisibilityMap::Parameters visibility;
-    SmoothingParameters smoothing;
-    SegmentationParameters segmentation;
-    TopologyGraphParameters graph;
-    CreaseAngleParameters crease_angles;
-    GridSpec grid;
-    ResolutionEstimate resolution;
-    SurfaceFill fill = SurfaceFill::kPoints;
-    bool raised_for_fill = false;  // the automatic resolution counts on a fill
-    int search_cap = 0;            // the search for narrow faces goes no finer (0: off)
-    std::string search_cap_reason; // why it stops there
-    std::string fill_reason;
-    double point_noise = -1.0; // cells: the fill's measure (FillReport::noise), or -1
-    double point_flat_share = -1.0; // FillReport::flat_share (kShapeNotNoiseShare)
-    bool calmed = false, calmed_for_shape = false; // calmResolution(): noise or spread
-    std::vector<std::string> notes;
-    std::vector<std::string> warnings;
-    PhaseTimes times;
-  };
-
-  /** \brief Everything a compute() produces, built aside and moved into the members on
-   * success. */
-  struct Results
-  {
-    VoxelBand band;
-    FreeSpace free_space;
-    VisibilityMap map;
-    FeatureSegmentation segmentation;
-    TopologyGraph graph;
-  };
+  using Run = detail::EstimationRun;         // impl/estimation_run.h
+  using Results = detail::EstimationResults; // impl/estimation_run.h
 
   Run prepare() const;
   int chooseResolution(const CloudShape& shape, Run& run) const;

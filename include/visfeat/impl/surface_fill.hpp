@@ -95,7 +95,7 @@ localTriangleCells(const pcl::PointCloud<PointT>& cloud,
   const std::vector<TriangleIndices> triangles =
     umbrellaTriangles(points, neighbours, k, parameters, threads);
   if (report)
-    *report = FillReport{triangles.size(), -1.0};
+    *report = FillReport{triangles.size(), -1.0, -1.0, points.size()};
   if (parameters.crease_degrees >= 180.0)
     return rasterizeTriangles(grid, points, triangles, threads);
   const std::vector<TangentPlane> planes =

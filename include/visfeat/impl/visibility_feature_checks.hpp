@@ -61,20 +61,31 @@ searchFurtherAdvice(int max_search_resolution)
          std::to_string(max_search_resolution);
 }
 
-/** Whether the points' noise the fill measured reads the shape of a cloud too sparse
- * for its creases rather than noise (kShapeNotNoiseShare). */
-inline bool
-noiseIsShape(double flat_share)
+/** Whether the points' noise the fill measured (the Run's point_flat_share and
+ * noise_points) cannot be noise: too few points to tell (kNoiseReadablePoints). */
+template <typename Run>
+bool
+tooFewPointsForNoise(const Run& run)
 {
-  return flat_share >= kShapeNotNoiseShare;
+  return run.noise_points > 0 && run.noise_points < kNoiseReadablePoints;
+}
+
+/** Whether the points' noise the fill measured reads the shape of a cloud too sparse
+ * for its creases rather than noise (kShapeNotNoiseShare, kNoiseReadablePoints). */
+template <typename Run>
+bool
+noiseIsShape(const Run& run)
+{
+  return run.point_flat_share >= kShapeNotNoiseShare || tooFewPointsForNoise(run);
 }
 
 /** The points' noise in words: "noise", or "spread" with its cause when it is the
  * shape. */
-inline std::string
-pointSpreadName(double flat_share)
+template <typename Run>
+std::string
+pointSpreadName(const Run& run)
 {
-  return noiseIsShape(flat_share) ? "spread" : "noise";
+  return noiseIsShape(run) ? "spread" : "noise";
 }
 
 /** Whether the points' spread is their shape rather than noise: as judged where the
@@ -84,7 +95,7 @@ template <typename Run>
 bool
 spreadIsShape(const Run& run)
 {
-  return run.calmed ? run.calmed_for_shape : noiseIsShape(run.point_flat_share);
+  return run.calmed ? run.calmed_for_shape : noiseIsShape(run);
 }
 
 /** The advice of a warning that finer cells would help, unless the points are rough
@@ -284,15 +295,22 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::checkResults(const Results& re
   if (run.point_noise > kNoisyPointNoise) {
     const int calmer = detail::calmerResolution(resolution, run.point_noise);
     std::ostringstream r;
-    if (detail::noiseIsShape(run.point_flat_share)) {
+    if (detail::noiseIsShape(run)) {
       r << "the points are too sparse for the part: the planes fitted to each point's "
            "neighbours leave "
-        << std::round(1000.0 * run.point_noise) / 1000.0 << " cells (median RMS), yet "
-        << std::round(100.0 * run.point_flat_share)
-        << "% of the neighbourhoods lie exactly flat, so this is the shape, not "
-           "noise: the neighbours of most points span a crease (faces only a few "
-           "point spacings wide); the band filled between them is as rough, and the "
-           "result may be wrong; sample denser (faces about 10 spacings wide or more)";
+        << std::round(1000.0 * run.point_noise) / 1000.0 << " cells (median RMS), ";
+      if (detail::tooFewPointsForNoise(run))
+        r << "and with only " << run.noise_points << " points (fewer than "
+          << kNoiseReadablePoints
+          << ") no neighbourhood lies within one face, so noise "
+          << "cannot be told from the shape: read it as the shape";
+      else
+        r << "yet " << std::round(100.0 * run.point_flat_share)
+          << "% of the neighbourhoods lie exactly flat, so this is the shape, not "
+             "noise: the neighbours of most points span a crease (faces only a few "
+             "point spacings wide)";
+      r << "; the band filled between them is as rough, and the result may be wrong; "
+           "sample denser (faces about 10 spacings wide or more)";
     } else {
       r << "the points scatter about their local planes: noise "
         << std::round(1000.0 * run.point_noise) / 1000.0

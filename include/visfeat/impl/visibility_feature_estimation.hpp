@@ -224,6 +224,7 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::fillCells(
     if (report.noise >= 0.0)
       run.point_noise = report.noise / run.grid.cell_size;
     run.point_flat_share = report.flat_share;
+    run.noise_points = report.points;
     return cells;
   }
   case SurfaceFill::kOrganized:

@@ -356,14 +356,19 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::calmResolution(
   if (calmer >= current)
     return results;
   std::ostringstream why;
-  const bool shape = detail::noiseIsShape(run.point_flat_share);
-  why << "the points' " << detail::pointSpreadName(run.point_flat_share) << " "
+  const bool shape = detail::noiseIsShape(run);
+  why << "the points' " << detail::pointSpreadName(run) << " "
       << std::round(1000.0 * run.point_noise) / 1000.0 << " cells at " << current
       << ", where counts break: lowered to " << calmer << ", where it is about "
       << kCalmRoughness << " cells"
-      << (shape ? "; that spread is the shape, not noise: the neighbourhoods of most "
-                  "points span a crease"
-                : "");
+      << (!shape ? std::string()
+          : detail::tooFewPointsForNoise(run)
+            ? "; read as the shape: with fewer than " +
+                std::to_string(kNoiseReadablePoints) +
+                " points no neighbourhood lies within one face, so noise cannot be "
+                "told from it"
+            : std::string("; that spread is the shape, not noise: the neighbourhoods "
+                          "of most points span a crease"));
   Run calm = base;
   calm.resolution.resolution = calmer;
   calm.resolution.reason = run.resolution.reason + "; " + why.str();
@@ -372,7 +377,7 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::calmResolution(
   calm.calmed = true;
   calm.calmed_for_shape = shape;
   calm.search_cap_reason =
-    "what the points' " + detail::pointSpreadName(run.point_flat_share) + " allows";
+    "what the points' " + detail::pointSpreadName(run) + " allows";
   PointCloudOut calm_output = output;
   std::string problem;
   if (std::optional<Results> calm_results = runAt(calm, calmer, calm_output, problem)) {
@@ -381,9 +386,9 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::calmResolution(
       2.0 * run.segmentation.components.min_radius * calm.grid.cell_size;
     std::ostringstream w;
     w << (shape ? "the points are too sparse for the part: " : "") << "resolution "
-      << calmer << " for the points' " << detail::pointSpreadName(run.point_flat_share)
-      << " (" << why.str() << "): features closer than about " << std::setprecision(3)
-      << apart << " (world units) merge and small ones may be lost";
+      << calmer << " for the points' " << detail::pointSpreadName(run) << " ("
+      << why.str() << "): features closer than about " << std::setprecision(3) << apart
+      << " (world units) merge and small ones may be lost";
     if (apart >= 0.5 * run.resolution.extent)
       w << ", at least half the cloud's extent of " << run.resolution.extent
         << ": expect few features or none";
