@@ -310,7 +310,7 @@ readOutputs(const Arguments& args, Options& opt, std::string& error)
     if (!checkWritable(path, error))
       return false;
   }
-  if (!opt.voxels.empty() && opt.voxels == opt.output) {
+  if (!opt.voxels.empty() && sameFile(opt.voxels, opt.output)) {
     error = "the -voxels file must differ from the output file";
     return false;
   }
@@ -328,7 +328,7 @@ readOutputs(const Arguments& args, Options& opt, std::string& error)
     }
     if (!checkWritable(opt.graph, error))
       return false;
-    if (opt.graph == opt.output || opt.graph == opt.voxels) {
+    if (sameFile(opt.graph, opt.output) || sameFile(opt.graph, opt.voxels)) {
       error = "the -graph file must differ from the other outputs";
       return false;
     }

@@ -2,11 +2,15 @@
 #   cmake -DBUILD_DIR=<visfeat build> -DPREFIX=<scratch prefix>
 #         -DSOURCE_DIR=<this directory> -DWORK_DIR=<consumer build dir>
 #         [-DCONFIG=Release] [-DCXX_COMPILER=...] [-DGENERATOR=...]
-#         [-DEXTRA_FLAGS="-fsanitize=..."] -P run.cmake
+#         [-DEXTRA_FLAGS="-fsanitize=..."] [-DREADME=<README.md>] -P run.cmake
 # (a) installs the visfeat build into PREFIX, (b) configures the consumer project
 # with CMAKE_PREFIX_PATH=PREFIX, (c) builds it, (d) runs it; (b)-(d) again for the
-# core-only consumer in core_only/ (find_package(visfeat COMPONENTS core), no PCL). Any failing step
-# stops with FATAL_ERROR and shows that step's output.
+# core-only consumer in core_only/ (find_package(visfeat COMPONENTS core), no PCL).
+# With README: (b)-(d) for README's own example, as a user would copy it: the first
+# ```cmake block of "## Use from CMake" (after a cmake_minimum_required line) and the
+# ```cpp block of "## API", run on a generated cube (BUILD_DIR's visfeat_generate),
+# which must leave graph.json. Any failing step stops with FATAL_ERROR and shows that
+# step's output.
 #
 # EXTRA_FLAGS: when visfeat is built with VISFEAT_SANITIZE, the consumer is
 # compiled and linked with the same -fsanitize flags (an ASan-instrumented
@@ -74,3 +78,65 @@ endfunction()
 
 build_and_run("${SOURCE_DIR}" "${WORK_DIR}")
 build_and_run("${SOURCE_DIR}/core_only" "${WORK_DIR}-core")
+
+# README's example, copied as written.
+if(README)
+  file(READ "${README}" readme)
+  # the section's first fenced block of the given language
+  function(readme_block section language out)
+    string(FIND "${readme}" "\n## ${section}\n" at)
+    if(at LESS 0)
+      message(FATAL_ERROR "install_consumer: README has no section '## ${section}'")
+    endif()
+    string(SUBSTRING "${readme}" ${at} -1 rest)
+    string(FIND "${rest}" "\n```${language}\n" begin)
+    if(begin LESS 0)
+      message(FATAL_ERROR "install_consumer: no ```${language} block in '${section}'")
+    endif()
+    string(LENGTH "\n```${language}\n" skip)
+    math(EXPR begin "${begin} + ${skip}")
+    string(SUBSTRING "${rest}" ${begin} -1 rest)
+    string(FIND "${rest}" "\n```" end)
+    string(SUBSTRING "${rest}" 0 ${end} block)
+    set(${out} "${block}\n" PARENT_SCOPE)
+  endfunction()
+  readme_block("Use from CMake" cmake cmake_block)
+  readme_block("API" cpp cpp_block)
+  set(readme_src "${WORK_DIR}-readme-src")
+  file(REMOVE_RECURSE "${readme_src}" "${WORK_DIR}-readme")
+  file(WRITE "${readme_src}/CMakeLists.txt"
+       "cmake_minimum_required(VERSION 3.16)\n${cmake_block}")
+  file(WRITE "${readme_src}/main.cpp" "${cpp_block}")
+  set(args -S "${readme_src}" -B "${WORK_DIR}-readme" "-DCMAKE_PREFIX_PATH=${PREFIX}"
+           "-DCMAKE_BUILD_TYPE=${CONFIG}")
+  if(GENERATOR)
+    list(APPEND args -G "${GENERATOR}")
+  endif()
+  if(CXX_COMPILER)
+    list(APPEND args "-DCMAKE_CXX_COMPILER=${CXX_COMPILER}")
+  endif()
+  if(EXTRA_FLAGS)
+    list(APPEND args "-DCMAKE_CXX_FLAGS=${EXTRA_FLAGS}"
+                     "-DCMAKE_EXE_LINKER_FLAGS=${EXTRA_FLAGS}")
+  endif()
+  step(readme_configure ${CMAKE_COMMAND} ${args})
+  step(readme_build ${CMAKE_COMMAND} --build "${WORK_DIR}-readme" --config "${CONFIG}")
+  set(generate "${BUILD_DIR}/tools/visfeat_generate")
+  if(EXISTS "${generate}")
+    set(run_dir "${WORK_DIR}-readme-run")
+    file(REMOVE_RECURSE "${run_dir}")
+    file(MAKE_DIRECTORY "${run_dir}")
+    step(readme_cloud "${generate}" cube "${run_dir}/cloud.pcd" -resolution 64 -seed 3)
+    set(exe "${WORK_DIR}-readme/app")
+    if(NOT EXISTS "${exe}")
+      set(exe "${WORK_DIR}-readme/${CONFIG}/app")
+    endif()
+    execute_process(COMMAND "${exe}" WORKING_DIRECTORY "${run_dir}"
+                    RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE out)
+    if(NOT rc EQUAL 0 OR NOT EXISTS "${run_dir}/graph.json")
+      message(FATAL_ERROR "install_consumer: README's example failed (${rc}), or "
+                          "wrote no graph.json:\n${out}")
+    endif()
+    message(STATUS "install_consumer: README's example: ok")
+  endif()
+endif()

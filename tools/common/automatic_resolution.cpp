@@ -17,11 +17,8 @@ checkShapeAndResolution(const std::string& input,
 {
   using namespace pcl::console;
   const visfeat::CloudShape shape = visfeat::cloudShapeOf(xyz);
-  if (!visfeat::hasExtent(shape)) {
-    if (!user_resolution)
-      resolution = visfeat::GridSpec::kMinResolution; // the estimator refuses it
-    return true;
-  }
+  if (!visfeat::hasExtent(shape))
+    return true; // the estimator refuses it, saying why (at any resolution)
   // The collinear check needs no resolution: before the (longer) spacing estimate.
   std::string problem = visfeat::shapeProblem(shape, 0);
   if (!problem.empty()) {

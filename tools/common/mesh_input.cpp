@@ -361,7 +361,10 @@ loadMeshAsCloud(const std::string& path,
       for (Eigen::Vector3d& v : mesh.vertices)
         v -= offset;
     if (mesh.triangles.empty())
-      throw visfeat::Error("the mesh has no faces");
+      throw visfeat::Error(
+        "the mesh has no faces: if its " + std::to_string(mesh.vertices.size()) +
+        " vertices are a point cloud, give them as .ply, .pcd or .xyz, which are "
+        "read as clouds");
     const double area = visfeat::meshArea(mesh);
     if (!(area > 0.0))
       throw visfeat::Error("the mesh has zero area (all " +

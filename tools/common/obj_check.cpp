@@ -117,14 +117,24 @@ mtlProblem(const fs::path& path)
   return "";
 }
 
+/** \brief The largest face vertex index of the file (OBJ counts from 1) and its line:
+ * checked against the vertices once all are read. */
+struct LargestFaceIndex
+{
+  long long index = 0;
+  std::size_t line = 0;
+};
+
 /** \brief What is wrong with one line (number `n`) of the .obj file at `path`;
- * `vertices` and `normals` count the lines read so far. */
+ * `vertices` and `normals` count the lines read so far, `largest` the faces' largest
+ * index. */
 std::string
 objLineProblem(const fs::path& path,
                const std::string& line,
                std::size_t n,
                std::size_t& vertices,
-               std::size_t& normals)
+               std::size_t& normals,
+               LargestFaceIndex& largest)
 {
   const std::string where = "line " + std::to_string(n) + ": ";
   if (blankButNotEmpty(line))
@@ -141,10 +151,21 @@ objLineProblem(const fs::path& path,
     if (normals > vertices)
       return where + "more vertex normals than vertices";
   } else if (key == "f") {
-    for (std::size_t i = 1; i < t.size(); ++i)
+    for (std::size_t i = 1; i < t.size(); ++i) {
       if (!faceIndex(t[i]))
         return where + "face vertex '" + t[i].substr(0, 20) +
                "' does not start with an index";
+      // OBJ counts from 1; a negative index counts back from the last vertex so far
+      const long long v = std::strtoll(t[i].c_str(), nullptr, 10);
+      if (v == 0)
+        return where + "face vertex index 0 (OBJ counts vertices from 1)";
+      if (v < 0 && static_cast<unsigned long long>(-v) > vertices)
+        return where + "face vertex index " + std::to_string(v) +
+               " reaches before the " + "first vertex (" + std::to_string(vertices) +
+               " vertices so far)";
+      if (v > largest.index)
+        largest = {v, n};
+    }
   } else if (trimmed.compare(0, 6, "mtllib") == 0) {
     if (t.size() < 2)
       return where + "'mtllib' without a file name";
@@ -165,16 +186,24 @@ objProblem(const std::string& path)
     return "cannot be opened";
   std::string line;
   std::size_t vertices = 0, normals = 0;
+  LargestFaceIndex largest;
   for (std::size_t n = 1; std::getline(in, line); ++n) {
     if (line.empty())
       continue;
-    const std::string problem = objLineProblem(path, line, n, vertices, normals);
+    const std::string problem =
+      objLineProblem(path, line, n, vertices, normals, largest);
     if (!problem.empty())
       return problem;
   }
   if (in.bad())
     return "read error";
-  return vertices == 0 ? "no vertex ('v x y z' line)" : "";
+  if (vertices == 0)
+    return "no vertex ('v x y z' line)";
+  if (static_cast<unsigned long long>(largest.index) > vertices)
+    return "line " + std::to_string(largest.line) + ": face vertex index " +
+           std::to_string(largest.index) + " out of range (the file has " +
+           std::to_string(vertices) + " vertices, counting from 1)";
+  return "";
 }
 
 } // namespace visfeat_tools

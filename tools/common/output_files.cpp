@@ -19,6 +19,19 @@ temporaryPath(const std::string& path)
 }
 
 bool
+sameFile(const std::string& a, const std::string& b)
+{
+  if (a.empty() || b.empty())
+    return false;
+  std::error_code ec;
+  if (fs::exists(a, ec) && fs::exists(b, ec) && fs::equivalent(a, b, ec) && !ec)
+    return true;
+  const fs::path ca = fs::weakly_canonical(fs::absolute(a, ec), ec);
+  const fs::path cb = fs::weakly_canonical(fs::absolute(b, ec), ec);
+  return ca == cb || a == b;
+}
+
+bool
 checkWritable(const std::string& path, std::string& error)
 {
   std::error_code ec;

@@ -16,6 +16,12 @@ std::string temporaryPath(const std::string& path);
  * it again unless it existed before. On failure `error` is one line. */
 bool checkWritable(const std::string& path, std::string& error);
 
+/** \brief Whether two output paths name the same file: equal once made absolute and
+ * resolved (".", "..", symbolic links of the existing part), or, where both exist,
+ * the same file (hard links). "o.pcd", "./o.pcd" and "$PWD/o.pcd" are one file: two
+ * outputs written there would leave only the last (and the second rename fails). */
+bool sameFile(const std::string& a, const std::string& b);
+
 /** \brief Move the finished temporary file into place (same directory: atomic). On
  * failure the temporary file is removed and `error` is one line. */
 bool commitOutput(const std::string& path, std::string& error);

@@ -10,6 +10,9 @@ namespace visfeat_tools {
 void
 printError(const std::string& program, const std::string& message)
 {
+  // stdout first: piped, it is fully buffered, and its lines (the banner, "Computing
+  // ...") would come after the error they led to
+  std::fflush(stdout);
   pcl::console::print_error("%s: error: %s\n", program.c_str(), message.c_str());
 }
 

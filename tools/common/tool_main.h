@@ -12,7 +12,7 @@
 namespace visfeat_tools {
 
 /** \brief Print one error line "program: error: message" (PCL style, red on a
- * terminal) to stderr. */
+ * terminal) to stderr, after flushing stdout (so that a piped run keeps its order). */
 void printError(const std::string& program, const std::string& message);
 
 /** \brief -q: errors only. print_highlight() and print_value() ignore the verbosity

@@ -88,7 +88,7 @@ parsePictureRequests(const Arguments& args,
       return false;
     }
     for (const std::string& other : other_outputs)
-      if (path == other) {
+      if (sameFile(path, other)) {
         error =
           std::string("the ") + option + " file must differ from the other outputs";
         return false;
@@ -97,7 +97,7 @@ parsePictureRequests(const Arguments& args,
       return false;
     (std::string(option) == "-png" ? requests.classes : requests.radius) = path;
   }
-  if (!requests.classes.empty() && requests.classes == requests.radius) {
+  if (!requests.classes.empty() && sameFile(requests.classes, requests.radius)) {
     error = "the -png and -png_radius files must differ";
     return false;
   }

@@ -62,6 +62,23 @@ TEST_F(InputGuards, ObjProblemRefusesWhatPclsReaderOverruns)
             "no vertex ('v x y z' line)");
 }
 
+TEST_F(InputGuards, ObjProblemRefusesFaceIndicesOutOfRangeInTheFilesNumbering)
+{
+  // OBJ counts vertices from 1: the message gives the index and line as in the file
+  // (before, "face 0: vertex index 8 out of range (3 vertices, counting from 0)" from
+  // PCL's 0-based mesh, for 'f 1 2 9')
+  EXPECT_EQ(vt::objProblem(write("a.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\n\nf 1 2 9\n")),
+            "line 5: face vertex index 9 out of range (the file has 3 vertices, "
+            "counting from 1)");
+  EXPECT_EQ(vt::objProblem(write("b.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n")),
+            "line 4: face vertex index 0 (OBJ counts vertices from 1)");
+  EXPECT_EQ(vt::objProblem(write("c.obj", "v 0 0 0\nv 1 0 0\nf -1 -2 -3\nv 0 1 0\n")),
+            "line 3: face vertex index -3 reaches before the first vertex (2 vertices "
+            "so far)");
+  // faces before their vertices, and the largest index exactly the last vertex: fine
+  EXPECT_EQ(vt::objProblem(write("d.obj", "f 1 2 3\nv 0 0 0\nv 1 0 0\nv 0 1 0\n")), "");
+}
+
 TEST_F(InputGuards, ObjProblemRefusesMaterialLibrariesPclCannotRead)
 {
   fs::create_directory(path("dir"));

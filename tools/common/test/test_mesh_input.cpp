@@ -378,7 +378,10 @@ TEST_F(MeshInput, RefusesMeshesWithoutArea)
   const std::string none = write("none.off", "OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n");
   const SampledMesh faceless = sampleMesh(none, 10);
   EXPECT_FALSE(faceless.ok);
-  EXPECT_EQ(faceless.error, "'" + none + "': the mesh has no faces");
+  EXPECT_EQ(faceless.error, "'" + none +
+                              "': the mesh has no faces: if its 3 vertices are a point "
+                              "cloud, give them as .ply, .pcd or .xyz, which are read "
+                              "as clouds");
   const std::string flat =
     write("flat.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n2 0 0\n3 0 1 2\n");
   const SampledMesh flat_mesh = sampleMesh(flat, 10);
