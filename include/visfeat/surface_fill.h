@@ -94,6 +94,16 @@ constexpr double kMinFillRaise = 1.25;
  * (kSpacingCheckRepairShare). */
 constexpr double kFillCheckPointsPerCell2 = 4.0;
 
+/** \brief Bytes a filled band needs per cell of the surface's area (area / cell_size^2,
+ * a lower bound of its cells: a plane crosses at least one cell per cell area) while it
+ * is rasterised and built, for the refusal before the fill allocates anything.
+ * Measured 2026-12-07 on the generated cube, 2,352,361 points filled at 2048 cells:
+ * 14.2 M mixed cells for 9.4 M cells of area (1.5 times), peak 3.13 GB, about 330 bytes
+ * per cell of area; 200 leaves a margin so that no run that fits is refused (the band
+ * itself is checked again once built). A cloud of 562,000 points 16 cells apart at
+ * 8192 (a fresh user's trial) rose past 15 GB in the fill before this check. */
+constexpr double kFillBytesPerCell = 200.0;
+
 /** \brief At a set resolution, a points band whose spacing was not measured (a cloud
  * of kFillCheckPointsPerCell2 points per cell^2 or more) is checked after all when
  * more of its cells than this were added by the repair: then the spacing is measured,

@@ -284,10 +284,31 @@ void
 VisibilityFeatureEstimation<PointInT, PointOutT>::checkMemoryBudget(
   const Run& run) const
 {
-  // Refuse before allocating the band: cells are at most the points. The free space and
-  // the map are checked again once the band is known (checkBandMemory).
+  // Refuse before allocating the band: the cells of the points are at most the points;
+  // a fill makes cells between them, at least one a cell area of the surface (the
+  // mesh's area, or the points' count times their spacing squared), and holds each
+  // about kFillBytesPerCell while it rasterises. The free space and the map are checked
+  // again once the band is known (checkBandMemory).
   const GridSpec& grid = run.grid;
   const std::size_t points = surface_->size();
+  const double cell_area = grid.cell_size * grid.cell_size;
+  double surface_area = 0.0;
+  if (run.fill == SurfaceFill::kMesh && mesh_)
+    surface_area = meshArea(*mesh_);
+  else if (run.fill == SurfaceFill::kLocalTriangles && run.resolution.spacing > 0.0)
+    surface_area = double(points) * run.resolution.spacing * run.resolution.spacing;
+  const double fill_cells =
+    cell_area > 0.0 ? std::min(surface_area / cell_area, double(grid.cellCount()))
+                    : 0.0;
+  if (fill_cells > 0.0)
+    checkMemory(static_cast<std::uint64_t>(fill_cells * kFillBytesPerCell),
+                memory_limit_,
+                "filling the band between " +
+                  std::string(run.fill == SurfaceFill::kMesh ? "the mesh's triangles"
+                                                             : "the points") +
+                  " at resolution " + std::to_string(run.resolution.resolution) +
+                  " (at least " + std::to_string(std::llround(fill_cells)) +
+                  " cells: the surface's area in cells)");
   const std::size_t cells =
     static_cast<std::size_t>(std::min<std::uint64_t>(points, grid.cellCount()));
   const int threads = resolveThreads(run.visibility.threads);
