@@ -12,6 +12,7 @@
 #include <support/synthetic_shapes.h>
 #include <visfeat/core/common/error.h>
 #include <visfeat/core/graph/topology_graph.h>
+#include <visfeat/core/mesh/mesh_sampling.h>
 #include <visfeat/core/segmentation/feature_segmentation.h>
 #include <visfeat/visibility_feature_estimation.h>
 
@@ -19,8 +20,11 @@
 #include <pcl/point_types.h>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <map>
+#include <memory>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -291,6 +295,74 @@ INSTANTIATE_TEST_SUITE_P(Models,
 // Joining: at sigma 0.32 noise breaks edges of the box with hole into pieces that the
 // default join_distance (24 cells) joins (NoiseMode checks 14 edges); without joining
 // (0: only touching pieces) some edges come out in pieces.
+// The icosahedron as the public lapy file has it: a corner on each end of the z axis,
+// the rings of five at z = +-2/sqrt(5), a mirror plane (y = 0) on a plane of the grid.
+// In that orientation its shallow creases (138 degrees) break into several edge
+// regions, and the split-corner rule took two corners a whole edge apart that shared
+// two of them for one corner split in two: 12 corners became 2 at 300 cells and 1 at
+// 400 (the file's 1,000,000-point cloud: 2 vertices, 23 edges at its automatic 323).
+visfeat::SurfaceMesh
+poleIcosahedron()
+{
+  const double pi = std::acos(-1.0), r = 4.0 / std::sqrt(5.0), h = 2.0 / std::sqrt(5.0);
+  visfeat::SurfaceMesh mesh;
+  mesh.vertices.emplace_back(0.0, 0.0, 2.0); // 0: north; 1-5 upper ring; 6-10 lower
+  for (int k = 0; k < 5; ++k)
+    mesh.vertices.emplace_back(r * std::cos(2 * pi * k / 5),
+                               r * std::sin(2 * pi * k / 5), h);
+  for (int k = 0; k < 5; ++k)
+    mesh.vertices.emplace_back(r * std::cos(2 * pi * k / 5 + pi / 5),
+                               r * std::sin(2 * pi * k / 5 + pi / 5), -h);
+  mesh.vertices.emplace_back(0.0, 0.0, -2.0); // 11: south
+  for (std::uint32_t k = 0; k < 5; ++k) {
+    const std::uint32_t u = 1 + k, u1 = 1 + (k + 1) % 5, l = 6 + k,
+                        l1 = 6 + (k + 1) % 5;
+    mesh.triangles.push_back({0, u, u1});
+    mesh.triangles.push_back({u, l, u1});
+    mesh.triangles.push_back({l, l1, u1});
+    mesh.triangles.push_back({11, l1, l});
+  }
+  return mesh;
+}
+
+TEST(SymmetricOrientation, EveryCornerOfThePoleIcosahedronIsItsOwnVertex)
+{
+  const auto mesh = std::make_shared<visfeat::SurfaceMesh>(poleIcosahedron());
+  auto cloud = std::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
+  for (const visfeat::MeshSample& s : visfeat::sampleMesh(*mesh, 100000, 7))
+    cloud->push_back(pcl::PointXYZ(s.position.x(), s.position.y(), s.position.z()));
+  for (const int resolution : {300, 400}) {
+    visfeat::VisibilityFeatureEstimation<pcl::PointXYZ, visfeat::PointVisibility> est;
+    est.setInputCloud(cloud);
+    est.setInputMesh(mesh);
+    est.setResolution(resolution);
+    pcl::PointCloud<visfeat::PointVisibility> out;
+    est.compute(out);
+    ASSERT_EQ(est.getErrorMessage(), "");
+    const double cell = est.getGrid().cell_size;
+    // per vertex region, the true corners its points lie near (within 2 min_radius)
+    std::map<std::uint32_t, std::set<std::size_t>> corners_of;
+    for (const visfeat::PointVisibility& p : out.points) {
+      if (p.feature_class != static_cast<std::uint8_t>(FeatureClass::kVertex))
+        continue;
+      const Eigen::Vector3d at = p.getVector3fMap().cast<double>();
+      for (std::size_t v = 0; v < mesh->vertices.size(); ++v)
+        if ((at - mesh->vertices[v]).norm() < 2.0 * est.getMinRadius() * cell)
+          corners_of[p.label].insert(v);
+    }
+    std::set<std::size_t> found;
+    for (const auto& [label, corners] : corners_of) {
+      EXPECT_EQ(corners.size(), 1u)
+        << "resolution " << resolution << ": vertex region " << label << " holds "
+        << corners.size() << " corners";
+      found.insert(corners.begin(), corners.end());
+    }
+    EXPECT_EQ(found.size(), 12u) << "resolution " << resolution;
+    EXPECT_EQ(est.getSegmentation().classCounts()[1], 12u)
+      << "resolution " << resolution;
+  }
+}
+
 TEST(Joining, NoiseSplitEdgesAreJoined)
 {
   const PipelineRun run = runPipeline("box_with_hole", 1, 256, 0.32, 0, 0);

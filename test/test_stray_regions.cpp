@@ -312,6 +312,28 @@ TEST(StrayRegions, ACornerSplitInTwoIsOneCorner)
   EXPECT_EQ(visfeat::splitCornerMerge(sheet.graph), expected);
 }
 
+/** The same split corner, with the farthest a split corner's pieces may lie apart
+ * below and above V4 and V5's distance: two corners farther apart are two corners,
+ * whatever edge regions they share (a fragmented crease gave two corners a whole edge
+ * apart two shared edge regions, one going on to a third corner). */
+TEST(StrayRegions, SplitCornerPiecesLieWithinTheGivenDistance)
+{
+  const std::vector<FeatureClass> classes{kF, kE, kE, kV, kV, kV, kV, kE};
+  const Sheet sheet(
+    classes, [](int x, int y) { return splitCorner(x, y, 1); }, 3);
+  const double apart =
+    (sheet.graph.node(4).centroid - sheet.graph.node(5).centroid).norm();
+  ASSERT_GT(apart, 0.0);
+  Labels merged = identity(8);
+  merged[5] = 4;
+  merged[8] = 4;
+  EXPECT_EQ(sheet.graph.size(), 8u);
+  EXPECT_EQ(visfeat::strayRegionMerge(sheet.graph, 1.01 * apart), merged);
+  EXPECT_EQ(visfeat::splitCornerMerge(sheet.graph, 1.01 * apart), merged);
+  EXPECT_NE(visfeat::strayRegionMerge(sheet.graph, 0.99 * apart)[5], 4u);
+  EXPECT_EQ(visfeat::splitCornerMerge(sheet.graph, 0.99 * apart), identity(8));
+}
+
 /** The split corner (splitCorner) with a crease E9 (x 6..7, y 2..14) leaving its
  * piece V5 between F1 (x < 6) and F11 (x >= 6), and further up the same line a crease
  * E10 (y 24..30) with no corner between the same faces. E9 ends at a corner (the

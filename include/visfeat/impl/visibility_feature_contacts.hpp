@@ -171,7 +171,8 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::joinSplitCorners(
     detail::restoreCreaseAngles(results.graph, angle_of,
                                 applyRegionMerge(results, run, output, into));
   };
-  mergeKeepingAngles(splitCornerMerge(results.graph));
+  mergeKeepingAngles(splitCornerMerge(
+    results.graph, detail::splitCornerDistance(results.band, run.segmentation)));
   // Then a few cells of ridge at a corner, too few points to measure a turn, dead
   // ending there (cornerSpurMerge), join the corner.
   mergeKeepingAngles(

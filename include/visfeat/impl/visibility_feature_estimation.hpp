@@ -29,6 +29,15 @@ millisecondsSince(std::chrono::steady_clock::time_point start)
     .count();
 }
 
+/** \brief The farthest apart two vertex regions are pieces of one split corner
+ * (strayRegionMerge(), world units): 2 vertex_reach cells, twice the reach within which
+ * vertex candidates are one corner. Split pieces were measured 8-19 cells apart. */
+inline double
+splitCornerDistance(const VoxelBand& band, const SegmentationParameters& segmentation)
+{
+  return 2.0 * segmentation.vertex_reach * band.grid().cell_size;
+}
+
 /** \brief A message on one line (newlines of foreign exceptions become spaces). */
 inline std::string
 oneLine(std::string message)
@@ -436,8 +445,10 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::cleanUpRegions(
   std::vector<CreaseAngle> angles = mergeShallowCreases(results, run, output);
   // Stray regions after the crease rule: a face speck that the rule joins to the face
   // it touches is not one (the faceted boss: a 500-cell facet piece at a corner).
-  const std::vector<std::uint32_t> renumbered =
-    applyRegionMerge(results, run, output, strayRegionMerge(results.graph));
+  const std::vector<std::uint32_t> renumbered = applyRegionMerge(
+    results, run, output,
+    strayRegionMerge(results.graph,
+                     detail::splitCornerDistance(results.band, run.segmentation)));
   // stray regions join edges, faces or vertices, and an edge joins only a corner (a
   // piece between a split corner's two parts): each edge that stays keeps its angle
   // under its new label

@@ -160,6 +160,7 @@ reachesOtherVertex(const TopologyGraph& graph,
 std::vector<bool>
 mergeSplitCorners(const TopologyGraph& graph,
                   const std::vector<bool>& ends,
+                  double max_distance,
                   std::vector<std::uint32_t>& into)
 {
   const std::size_t n = graph.size();
@@ -171,7 +172,8 @@ mergeSplitCorners(const TopologyGraph& graph,
     const std::vector<std::uint32_t> edges = graph.neighbours(u, FeatureClass::kEdge);
     for (std::uint32_t v = u + 1; v <= n; ++v) {
       if (graph.node(v).feature_class != FeatureClass::kVertex || !ends[v] ||
-          into[v] != v)
+          into[v] != v ||
+          !((graph.node(u).centroid - graph.node(v).centroid).norm() <= max_distance))
         continue;
       std::vector<std::uint32_t> shared;
       bool leaves = false; // a shared edge goes on to a third vertex
@@ -199,11 +201,11 @@ mergeSplitCorners(const TopologyGraph& graph,
 } // namespace
 
 std::vector<std::uint32_t>
-splitCornerMerge(const TopologyGraph& graph)
+splitCornerMerge(const TopologyGraph& graph, double max_split_distance)
 {
   std::vector<std::uint32_t> into(graph.size() + 1);
   std::iota(into.begin(), into.end(), 0u);
-  mergeSplitCorners(graph, vertexEnds(graph), into);
+  mergeSplitCorners(graph, vertexEnds(graph), max_split_distance, into);
   for (std::uint32_t& target : into) // pieces join the corner that stays
     while (into[target] != target)
       target = into[target];
@@ -211,13 +213,14 @@ splitCornerMerge(const TopologyGraph& graph)
 }
 
 std::vector<std::uint32_t>
-strayRegionMerge(const TopologyGraph& graph)
+strayRegionMerge(const TopologyGraph& graph, double max_split_distance)
 {
   const std::size_t n = graph.size();
   std::vector<std::uint32_t> into(n + 1);
   std::iota(into.begin(), into.end(), 0u);
   const std::vector<bool> ends = vertexEnds(graph);
-  const std::vector<bool> split = mergeSplitCorners(graph, ends, into);
+  const std::vector<bool> split =
+    mergeSplitCorners(graph, ends, max_split_distance, into);
   for (std::uint32_t v = 1; v <= n; ++v) {
     if (graph.node(v).feature_class != FeatureClass::kVertex || ends[v] || split[v])
       continue;

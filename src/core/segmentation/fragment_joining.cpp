@@ -5,6 +5,8 @@
 
 #include <cmath>
 #include <iterator>
+#include <map>
+#include <vector>
 
 namespace visfeat {
 namespace segmentation {
@@ -54,18 +56,59 @@ nearbyPiecesOfEdges(const SegmentationState& state)
   return edge_reach;
 }
 
-/** Touching sets of one class: edges of the same two faces, or vertices. */
+/** Per vertex set (root), the core cells of its vertex candidates. */
+std::map<std::uint32_t, std::vector<CellId>>
+vertexSetCells(SegmentationState& state)
+{
+  std::map<std::uint32_t, std::vector<CellId>> cells;
+  for (const std::uint32_t l : state.vertices) {
+    std::vector<CellId>& into = cells[state.sets.find(l)];
+    into.insert(into.end(), state.core_cells[l].begin(), state.core_cells[l].end());
+  }
+  return cells;
+}
+
+/** Some candidate core cell of vertex set a lies within vertex_reach cells of one of
+ * set b's (straight distance): the two are parts of one corner. */
+bool
+candidatesWithinReach(const SegmentationState& state,
+                      const std::map<std::uint32_t, std::vector<CellId>>& cells,
+                      std::uint32_t a,
+                      std::uint32_t b)
+{
+  const auto ia = cells.find(a), ib = cells.find(b);
+  if (ia == cells.end() || ib == cells.end())
+    return false;
+  const double reach = state.parameters.vertex_reach;
+  for (const CellId x : ia->second)
+    for (const CellId y : ib->second)
+      if ((state.band.coord(x) - state.band.coord(y)).cast<double>().squaredNorm() <=
+          reach * reach)
+        return true;
+  return false;
+}
+
+/** Touching sets of one class: edges of the same two faces, or vertices whose
+ * candidates lie within vertex_reach of each other. Vertex regions far apart touch
+ * where the crease between them broke into specks that merged into both (the
+ * icosahedron in its file's orientation, a mirror plane on the grid: two corners 170
+ * cells apart, then through the shared edges all 12, joined into 2 vertices); they
+ * stay two corners. */
 bool
 joinTouching(SegmentationState& state, const Contacts& contacts)
 {
   bool changed = false;
+  const std::map<std::uint32_t, std::vector<CellId>> vertex_cells =
+    vertexSetCells(state);
   for (const auto& [pair, count] : contacts) {
     const auto [a, b] = pair;
     if (a > b || state.cls[a] != state.cls[b])
       continue;
     const bool same_edge =
       state.cls[a] == FeatureClass::kEdge && sameFacePair(state, a, b);
-    if (same_edge || state.cls[a] == FeatureClass::kVertex) {
+    const bool same_corner = state.cls[a] == FeatureClass::kVertex &&
+                             candidatesWithinReach(state, vertex_cells, a, b);
+    if (same_edge || same_corner) {
       state.sets.join(a, b);
       changed = true;
     }

@@ -3,6 +3,7 @@
 #include <visfeat/core/graph/topology_graph.h>
 
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 namespace visfeat {
@@ -36,7 +37,11 @@ namespace visfeat {
  * of 14-24 cells 8-19 cells from the true one, a piece of 2-14 cells beside it, and
  * a crease piece of 34-50 cells between them. The smaller joins the larger, and so
  * does every shared edge region joined to no other vertex (the piece between them).
- * Such regions are not tested as stray vertices.
+ * Such regions are not tested as stray vertices. Only regions whose centroids lie
+ * within max_split_distance are pieces of one corner: where creases broke into
+ * several edge regions, two corners a whole edge apart shared two of them (the public
+ * icosahedron in its file's orientation at 400 cells: three pairs of corners 200
+ * cells apart merged, 9 vertices for 12).
  *
  * **Corner specks.** A face region joined to no edge and to one vertex region, smaller
  * (in cells) than every face of that vertex's edges, is a speck at the corner's tip,
@@ -55,15 +60,23 @@ namespace visfeat {
  * icosahedron 11 of 21: 1-3 stray vertices; a tetrahedron a speck); every one was an
  * extra region and no true corner or face was one.
  *
+ * \param[in] max_split_distance the farthest apart (world units, between the regions'
+ *            centroids) two vertex regions are taken for one split corner; the
+ *            estimator passes splitCornerDistance(): 2 vertex_reach cells
  * \return per label (index 0 unused, size graph.size() + 1), the label it joins:
  *         itself when kept; for FeatureSegmentation::mergeRegions.
  */
-std::vector<std::uint32_t> strayRegionMerge(const TopologyGraph& graph);
+std::vector<std::uint32_t>
+strayRegionMerge(const TopologyGraph& graph,
+                 double max_split_distance = std::numeric_limits<double>::infinity());
 
 /** \brief The split-corner rule of strayRegionMerge alone, for graphs that gained
  * corners since (contact creases' corners beside the corner their crease runs to).
+ * \param[in] max_split_distance as strayRegionMerge's (world units, the centroids')
  * \return per label (index 0 unused, size graph.size() + 1), the label it joins. */
-std::vector<std::uint32_t> splitCornerMerge(const TopologyGraph& graph);
+std::vector<std::uint32_t>
+splitCornerMerge(const TopologyGraph& graph,
+                 double max_split_distance = std::numeric_limits<double>::infinity());
 
 /** \brief Corner spurs: edge regions that are a few cells of ridge at a corner.
  *
