@@ -1,4 +1,37 @@
-# Packaging test, run by ctest as:
+# configure and build the project in source_dir into work_dir against the prefix
+function(configure_and_build source_dir work_dir)
+  set(args -S "${source_dir}" -B "${work_dir}"
+           "-DCMAKE_PREFIX_PATH=${PREFIX}"
+           "-DCMAKE_BUILD_TYPE=${CONFIG}")
+  if(GENERATOR)
+    list(APPEND args -G "${GENERATOR}")
+  endif()
+  if(CXX_COMPILER)
+    list(APPEND args "-DCMAKE_CXX_COMPILER=${CXX_COMPILER}")
+  endif()
+  if(EXTRA_FLAGS)
+    list(APPEND args "-DCMAKE_CXX_FLAGS=${EXTRA_FLAGS}"
+                     "-DCMAKE_EXE_LINKER_FLAGS=${EXTRA_FLAGS}")
+  endif()
+  step(configure ${CMAKE_COMMAND} ${args})
+  step(build ${CMAKE_COMMAND} --build "${work_dir}" --config "${CONFIG}")
+endfunction()
+
+# the executable `name` a build in work_dir made (multi-config generators: in CONFIG/)
+function(built_executable work_dir name out)
+  set(exe "${work_dir}/${name}")
+  if(NOT EXISTS "${exe}")
+    set(exe "${work_dir}/${CONFIG}/${name}")
+  endif()
+  set(${out} "${exe}" PARENT_SCOPE)
+endfunction()
+
+function(build_and_run source_dir work_dir)
+  configure_and_build("${source_dir}" "${work_dir}")
+  built_executable("${work_dir}" consumer exe)
+  step(run "${exe}")
+  message(STATUS "install_consumer: ${step_output}")
+endfunction()# Packaging test, run by ctest as:
 #   cmake -DBUILD_DIR=<visfeat build> -DPREFIX=<scratch prefix>
 #         -DSOURCE_DIR=<this directory> -DWORK_DIR=<consumer build dir>
 #         [-DCONFIG=Release] [-DCXX_COMPILER=...] [-DGENERATOR=...]
@@ -107,30 +140,14 @@ if(README)
   file(WRITE "${readme_src}/CMakeLists.txt"
        "cmake_minimum_required(VERSION 3.16)\n${cmake_block}")
   file(WRITE "${readme_src}/main.cpp" "${cpp_block}")
-  set(args -S "${readme_src}" -B "${WORK_DIR}-readme" "-DCMAKE_PREFIX_PATH=${PREFIX}"
-           "-DCMAKE_BUILD_TYPE=${CONFIG}")
-  if(GENERATOR)
-    list(APPEND args -G "${GENERATOR}")
-  endif()
-  if(CXX_COMPILER)
-    list(APPEND args "-DCMAKE_CXX_COMPILER=${CXX_COMPILER}")
-  endif()
-  if(EXTRA_FLAGS)
-    list(APPEND args "-DCMAKE_CXX_FLAGS=${EXTRA_FLAGS}"
-                     "-DCMAKE_EXE_LINKER_FLAGS=${EXTRA_FLAGS}")
-  endif()
-  step(readme_configure ${CMAKE_COMMAND} ${args})
-  step(readme_build ${CMAKE_COMMAND} --build "${WORK_DIR}-readme" --config "${CONFIG}")
+  configure_and_build("${readme_src}" "${WORK_DIR}-readme")
   set(generate "${BUILD_DIR}/tools/visfeat_generate")
   if(EXISTS "${generate}")
     set(run_dir "${WORK_DIR}-readme-run")
     file(REMOVE_RECURSE "${run_dir}")
     file(MAKE_DIRECTORY "${run_dir}")
     step(readme_cloud "${generate}" cube "${run_dir}/cloud.pcd" -resolution 64 -seed 3)
-    set(exe "${WORK_DIR}-readme/app")
-    if(NOT EXISTS "${exe}")
-      set(exe "${WORK_DIR}-readme/${CONFIG}/app")
-    endif()
+    built_executable("${WORK_DIR}-readme" app exe)
     execute_process(COMMAND "${exe}" WORKING_DIRECTORY "${run_dir}"
                     RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE out)
     if(NOT rc EQUAL 0 OR NOT EXISTS "${run_dir}/graph.json")
