@@ -9,6 +9,7 @@
 #include "common/automatic_resolution.h"
 #include "common/cloud_input.h"
 #include "common/mesh_input.h"
+#include "common/progress_printer.h"
 #include "common/tool_main.h"
 #include "visfeat_options.h"
 #include "visfeat_outputs.h"
@@ -22,15 +23,11 @@
 #include <pcl/console/print.h>
 #include <pcl/console/time.h>
 
-#include <chrono>
 #include <cstdio>
 #include <memory>
-#include <mutex>
 #include <new>
 #include <string>
 #include <vector>
-
-#include <unistd.h>
 
 using namespace pcl::console;
 namespace vt = visfeat_tools;
@@ -40,72 +37,6 @@ namespace {
 const char* const kProgram = "visfeat";
 
 using vt::Estimator;
-
-/** \brief Progress of the visibility map on stderr: only after the first 2 s, at most
- * every 0.5 s; one line rewritten with \r on a terminal, plain lines otherwise. The
- * callback may be called from several threads at once. */
-class ProgressPrinter
-{
-public:
-  ProgressPrinter()
-      : start_(Clock::now())
-      , last_(start_)
-      , tty_(isatty(fileno(stderr)) != 0)
-  {}
-
-  void operator()(std::size_t done, std::size_t total)
-  {
-    std::unique_lock<std::mutex> lock(mutex_, std::try_to_lock);
-    if (!lock.owns_lock() || total == 0)
-      return;
-    const Clock::time_point now = Clock::now();
-    const double elapsed = seconds(now - start_);
-    if (elapsed < 2.0 || (printed_ && seconds(now - last_) < 0.5))
-      return;
-    if (!printed_) {
-      // Leave the "Computing ..." line of stdout intact when both streams share a
-      // terminal or a log file.
-      std::fflush(stdout);
-      std::fputc('\n', stderr);
-    }
-    last_ = now;
-    printed_ = true;
-    last_total_ = total;
-    std::fprintf(stderr,
-                 "%s  visibility map: %3d%% (%zu / %zu cells, %.1f s since start)%s",
-                 tty_ ? "\r" : "", static_cast<int>(100.0 * done / total), done, total,
-                 elapsed, tty_ ? "" : "\n");
-    std::fflush(stderr);
-  }
-
-  /** \brief End the progress line, if one was started. */
-  void finish()
-  {
-    std::lock_guard<std::mutex> lock(mutex_);
-    if (printed_ && tty_) {
-      std::fprintf(stderr,
-                   "\r  visibility map: 100%% (%zu / %zu cells, %.1f s since start)\n",
-                   last_total_, last_total_, seconds(Clock::now() - start_));
-      std::fflush(stderr);
-    }
-    printed_ = false;
-  }
-
-private:
-  using Clock = std::chrono::steady_clock;
-
-  static double seconds(Clock::duration d)
-  {
-    return std::chrono::duration<double>(d).count();
-  }
-
-  std::mutex mutex_;
-  Clock::time_point start_;
-  Clock::time_point last_;
-  bool tty_;
-  bool printed_ = false;
-  std::size_t last_total_ = 0;
-};
 
 int
 fail(const std::string& message)
@@ -234,7 +165,7 @@ void
 configureEstimator(Estimator& estimator,
                    const vt::Options& opt,
                    const Input& in,
-                   const std::shared_ptr<ProgressPrinter>& progress)
+                   const std::shared_ptr<vt::ProgressPrinter>& progress)
 {
   estimator.setInputCloud(in.xyz);
   estimator.setInputMesh(in.mesh);
@@ -268,7 +199,7 @@ configureEstimator(Estimator& estimator,
 bool
 compute(Estimator& estimator,
         const vt::Options& opt,
-        ProgressPrinter& progress,
+        vt::ProgressPrinter& progress,
         pcl::PointCloud<visfeat::PointVisibility>& result,
         std::string& error)
 {
@@ -461,7 +392,8 @@ run(int argc, char** argv)
     return fail(error);
 
   Estimator estimator;
-  auto progress = std::make_shared<ProgressPrinter>();
+  const std::shared_ptr<vt::ProgressPrinter> progress =
+    vt::ProgressPrinter::forStderr();
   configureEstimator(estimator, opt, in, progress);
   // -max_radius 0 (the default) is the library's automatic cap, min_radius: what is
   // printed, drawn and written into the graph is the cap compute() uses.
