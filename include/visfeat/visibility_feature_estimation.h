@@ -457,6 +457,15 @@ private:
                            Run& run,
                            Results results,
                            PointCloudOut& output) const;
+  /** The search stops at run's resolution: the next, `next`, is (or would be) rough
+   * with `noise` cells; says so in run's reason and warnings, and checks results again
+   * with the noise as the search's limit. */
+  void keepUnderNoise(const Results& results,
+                      Run& run,
+                      const std::string& found,
+                      int next,
+                      double noise,
+                      bool predicted) const;
   /** The automatic resolution lowered where the fill measured noisy points. */
   Results calmResolution(const Run& base,
                          Run& run,

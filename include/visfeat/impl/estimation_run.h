@@ -42,6 +42,9 @@ struct EstimationRun
   bool calmed = false, calmed_for_shape = false; // calmResolution(): noise or spread
   std::vector<std::string> notes;
   std::vector<std::string> warnings;
+  /** The warnings before the checks of the results (checkResults()), to check them
+   * again where the search changes its limit afterwards. */
+  std::vector<std::string> warnings_before_checks;
   PhaseTimes times;
 };
 

@@ -109,6 +109,27 @@ roughPointsAdvice(bool shape)
                  "cells would make that worse: follow that warning first";
 }
 
+/** Why the search stops where the next resolution is, or would be, too rough
+ * (Run::search_cap_reason; keepUnderNoise()). */
+constexpr const char* kNoiseLimitReason = "what the points' noise allows";
+
+/** The advice where the automatic resolution is as fine as the points support
+ * (atPointsCap()): "sample denser: resolution R is <the cap's reason>", or, where the
+ * points' noise set the cap (kNoiseLimitReason: calmResolution(), keepUnderNoise()),
+ * smoothing first: a denser sample is as noisy. */
+template <typename Run>
+std::string
+pointsCapAdvice(const Run& run)
+{
+  const std::string at = "resolution " + std::to_string(run.resolution.resolution) +
+                         " is " + run.search_cap_reason;
+  if (run.search_cap_reason != kNoiseLimitReason)
+    return "sample denser: " + at;
+  return "smooth the points first (pcl::MovingLeastSquares; a denser sample is as "
+         "noisy): " +
+         at;
+}
+
 /** Whether the automatic resolution is as fine as the points support (with the fill
  * or without), so that finer cells need a denser sample. */
 template <typename Run>
@@ -175,7 +196,7 @@ warnMergedValleys(const Results& results, Run& run, int max_search_resolution)
     << " were merged into faces (the rims of a plate or wall thinner than that, steps, "
        "close parallel creases), although the graph looks whole; ";
   if (atPointsCap(run))
-    w << "sample denser: resolution " << resolution << " is " << run.search_cap_reason;
+    w << pointsCapAdvice(run);
   else if (run.search_cap > 0 && run.search_cap_reason == kSearchLimitReason)
     w << "raise the resolution" << finerExample(resolution) << " (setResolution(), or "
       << searchFurtherAdvice(max_search_resolution) << ")";
@@ -210,8 +231,7 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::checkResults(const Results& re
   // noise mode smooths points: no advice for a mesh's band, which has no noise
   const bool scan_advice = !noise_mode_ && run.fill != SurfaceFill::kMesh;
   const auto denser = [&](std::ostream& out) {
-    out << "sample denser: resolution " << resolution << " is "
-        << run.search_cap_reason;
+    out << detail::pointsCapAdvice(run);
     if (run.fill == SurfaceFill::kPoints)
       out << "; or fill the band between the points (fill 'triangles')";
   };
@@ -362,8 +382,7 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::checkGraph(const Results& resu
     << "resolution " << run.resolution.resolution
     << " were not all separated: read the graph as approximate, or ";
   if (detail::atPointsCap(run))
-    w << "sample denser: resolution " << run.resolution.resolution << " is "
-      << run.search_cap_reason;
+    w << detail::pointsCapAdvice(run);
   else
     w << "raise the resolution" << detail::finerExample(run.resolution.resolution);
   if (mesh_closed_ && run.search_cap > 0 &&

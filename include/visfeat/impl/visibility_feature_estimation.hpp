@@ -529,6 +529,7 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::computeResults(
   placeCornersAtMeets(results, run, output);
   bridgeEdgesToCorners(results, run, output);
   run.times.graph_ms = detail::millisecondsSince(start);
+  run.warnings_before_checks = run.warnings;
   checkResults(results, run);
   return results;
 }

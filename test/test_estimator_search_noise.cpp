@@ -1,0 +1,88 @@
+// The automatic resolution's search on noisy points: finer cells make the same noise
+// larger in cells, so the search for narrow faces does not rise to a resolution where
+// the points are rough (kNoisyPointNoise, kNoisyRoughness), whether that is foreseen
+// from the noise measured or seen once the finer run is made.
+
+#include "estimator_fixtures.h"
+
+#include <support/cad_models.h>
+#include <visfeat/point_types.h>
+#include <visfeat/surface_fill.h>
+#include <visfeat/visibility_feature_estimation.h>
+
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <string>
+
+namespace {
+
+using namespace visfeat_test::estimator;
+
+/** The stepped block (narrow faces at 256: its risers) under a rotation, `count`
+ * points with Gaussian noise of 0.3 cells at 256, in noise mode with the automatic
+ * resolution. */
+void
+computeNoisyStepped(Estimator& est, std::size_t count, std::uint64_t seed)
+{
+  const syn::CadModel model =
+    syn::rotated(syn::cadModelByName("stepped_block"), syn::randomRotation(seed));
+  syn::SamplingOptions options;
+  options.count = count;
+  options.seed = seed;
+  options.noise_sigma = 0.3 * model.bounds().sizes().maxCoeff() / 256.0;
+  est.setInputCloud(cloudOf(syn::sampleCadModel(model, options)));
+  est.setResolution(0);
+  est.setNoiseMode(true);
+  Output out;
+  est.compute(out);
+  ASSERT_EQ(est.getErrorMessage(), "");
+}
+
+/** The warning that says why the search stopped, or "". */
+std::string
+noiseStop(const Estimator& est)
+{
+  for (const std::string& w : est.getWarnings())
+    if (w.find("kept, since at") != std::string::npos)
+      return w;
+  return "";
+}
+
+TEST(SearchUnderNoise, AFinerRunThatTurnsOutRoughIsDropped)
+{
+  // 150,000 points, 1.8 cells apart at 256: noise mode's smoothing (2 cells) brings
+  // the noise to about 0.03 cells there, but at 512 it holds too few points and the
+  // noise is 0.38 cells. Before, the search went on to 1024 (noise 0.9 cells) and gave
+  // 116/114/79 for 16/24/10 after 36 s; the fresh user's scan of the CGAL part the
+  // same (130/219/134 for 2/5/5).
+  Estimator est;
+  computeNoisyStepped(est, 150000, 1);
+  const visfeat::ResolutionEstimate& r = est.getResolutionEstimate();
+  EXPECT_EQ(r.resolution, 256) << r.reason;
+  EXPECT_LT(est.getPointNoise(), visfeat::kNoisyPointNoise);
+  EXPECT_NE(r.reason.find("kept, since at 512 the points scatter"), std::string::npos)
+    << r.reason;
+  const std::string stop = noiseStop(est);
+  EXPECT_NE(stop.find("smooth the points first"), std::string::npos) << stop;
+  for (const std::string& w : est.getWarnings())
+    EXPECT_EQ(w.find("e.g. to 512"), std::string::npos)
+      << "no advice to go where the points are rough: " << w;
+}
+
+TEST(SearchUnderNoise, AFinerRunForeseenRoughIsNotMade)
+{
+  // 40,000 points, 3.5 cells apart at 256: the smoothing holds few points, the noise
+  // is about 0.2 cells at 256, so at 512 it would be at least 0.4: not tried (before,
+  // the run at 512 gave 0/0/1 with noise 0.5 cells).
+  Estimator est;
+  computeNoisyStepped(est, 40000, 2);
+  const visfeat::ResolutionEstimate& r = est.getResolutionEstimate();
+  EXPECT_LE(r.resolution, 256) << r.reason;
+  EXPECT_NE(r.reason.find("kept, since at 512 the points would scatter at least"),
+            std::string::npos)
+    << r.reason;
+  EXPECT_NE(noiseStop(est), "");
+}
+
+} // namespace
