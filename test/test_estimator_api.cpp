@@ -175,6 +175,14 @@ TEST(EstimatorApi, SearchSurfaceGivesTheFullRunsOutputAtTheInputPoints)
   expectSameFields(all, same, index, "subset");
   EXPECT_TRUE(std::isnan(some.points.back().visibility_radius));
   EXPECT_EQ(some.points.back().label, 0u);
+  // and a note says how many were skipped (none in the full run)
+  const std::string skipped = "1 of " + std::to_string(subset->size()) +
+                              " points have a NaN or infinite coordinate";
+  EXPECT_TRUE(std::any_of(part.getNotes().begin(), part.getNotes().end(),
+                          [&](const std::string& n) { return n.find(skipped) == 0; }))
+    << "no note on the skipped point";
+  for (const std::string& n : full.getNotes())
+    EXPECT_EQ(n.find("NaN"), std::string::npos) << n;
   EXPECT_FALSE(some.is_dense);
   // Every point of the band's cloud is in the cell GridSpec::cellOf gives.
   const visfeat::GridSpec& grid = full.getGrid();

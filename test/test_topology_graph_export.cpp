@@ -18,6 +18,7 @@
 #include <set>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace {
 
@@ -167,6 +168,48 @@ TEST(TopologyGraph, JsonParsesAndHoldsTheGraph)
   EXPECT_EQ(survey.at("nodes")[0].at("max")[2], 120.0 + g.node(1).max.z());
 }
 
+TEST(TopologyGraph, DotWithMetadataCarriesTheWarningsAsComments)
+{
+  // A fresh user's trial: the DOT file had no source, warnings or parameters, so a
+  // reader of the .dot alone could not know the graph was approximate.
+  const Sheet s;
+  const TopologyGraph g = buildGraph(s.band, s.labels, s.classes, 1);
+  GraphMetadata meta;
+  meta.grid = s.grid;
+  meta.source = "sheet.pcd";
+  meta.parameters = {{"resolution", "256"},
+                     {"resolution_reason", "a mesh: 256 cells"},
+                     {"min_radius", "16"}};
+  meta.warnings = {"the graph is not that of a closed part\nsecond line"};
+  meta.notes = {"a flat cloud"};
+  std::ostringstream with;
+  g.writeDot(with, meta);
+  const std::string text = with.str();
+  const std::string plain = dotOf(g);
+  ASSERT_GE(text.size(), plain.size());
+  EXPECT_EQ(text.substr(text.size() - plain.size()), plain)
+    << "the graph itself unchanged";
+  const std::string head = text.substr(0, text.size() - plain.size());
+  std::istringstream lines(head);
+  std::string line;
+  std::vector<std::string> comments;
+  while (std::getline(lines, line)) {
+    EXPECT_EQ(line.rfind("// ", 0), 0u)
+      << "every line before the graph a comment: " << line;
+    comments.push_back(line);
+  }
+  const auto has = [&](const std::string& want) {
+    return std::find(comments.begin(), comments.end(), want) != comments.end();
+  };
+  EXPECT_TRUE(has("// source: sheet.pcd")) << head;
+  EXPECT_TRUE(has("// resolution: 256")) << head;
+  EXPECT_TRUE(has("// resolution_reason: a mesh: 256 cells")) << head;
+  EXPECT_TRUE(has("// warning: the graph is not that of a closed part second line"))
+    << head;
+  EXPECT_TRUE(has("// note: a flat cloud")) << head;
+  EXPECT_EQ(head.find("min_radius"), std::string::npos) << "the rest is in the JSON";
+}
+
 TEST(TopologyGraph, WriteFileByExtension)
 {
   const Sheet s;
@@ -194,8 +237,11 @@ TEST(TopologyGraph, WriteFileByExtension)
     const std::string ext = p.extension().string();
     if (ext == ".json" || ext == ".JSON")
       EXPECT_EQ(text, jsonOf(g, meta)) << name;
-    else
-      EXPECT_EQ(text, dotOf(g)) << name;
+    else {
+      std::ostringstream dot;
+      g.writeDot(dot, meta);
+      EXPECT_EQ(text, dot.str()) << name;
+    }
   }
   for (const char* name : {"g.txt", "g", "g.json.bak", "dir.json/g", "g.dott"})
     EXPECT_THROW(g.writeFile((dir / name).string(), meta), visfeat::Error) << name;

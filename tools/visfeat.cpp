@@ -296,6 +296,8 @@ printSummary(const Estimator& estimator, const vt::Options& opt)
   print_value("%g", grid.cell_size);
   print_info(", dims ");
   print_value("%d x %d x %d", grid.dims.x(), grid.dims.y(), grid.dims.z());
+  // a fresh user read the dims against the resolution and missed the padding
+  print_info(" (the box plus %d cells a side)", visfeat::GridSpec::kPadding);
   print_info(", mixed cells ");
   print_value("%zu", band.size());
   print_info(" (repair cells ");

@@ -250,7 +250,7 @@ writeGraph(const Options& opt,
   if (ext == ".json")
     graph.writeJson(file, meta);
   else
-    graph.writeDot(file);
+    graph.writeDot(file, meta);
   file.close();
   if (!file) {
     discardOutput(opt.graph);

@@ -198,6 +198,20 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::prepare() const
   const std::string note = shapeNote(shape);
   if (!note.empty())
     run.notes.push_back(note);
+  // Points without a position get no feature: say how many (a fresh user's PLY had 715
+  // such points, passed through without a word)
+  std::size_t skipped = 0;
+  for (const auto i : *indices_) {
+    const PointInT& p = (*input_)[static_cast<std::size_t>(i)];
+    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+      ++skipped;
+  }
+  if (skipped > 0)
+    run.notes.push_back(
+      std::to_string(skipped) + " of " + std::to_string(indices_->size()) +
+      " points have a NaN or infinite coordinate: they are skipped (visibility_radius "
+      "NaN, label 0)" +
+      (input_->isOrganized() ? " (an organized cloud's empty pixels)" : ""));
   if (resolution_ != kAutomaticResolution &&
       max_search_resolution_ != kMaxSearchResolution)
     run.notes.push_back("setMaxSearchResolution() (" +

@@ -5,6 +5,7 @@
 
 #include "../common/json_document.h"
 
+#include <algorithm>
 #include <cctype>
 #include <charconv>
 #include <cmath>
@@ -99,6 +100,39 @@ TopologyGraph::writeDot(std::ostream& stream) const
 }
 
 void
+TopologyGraph::writeDot(std::ostream& stream, const GraphMetadata& meta) const
+{
+  std::ostringstream out;
+  out.imbue(std::locale::classic());
+  out.precision(9);
+  // one comment line each: a line break inside would end the comment
+  const auto comment = [&](const std::string& what, const std::string& text) {
+    std::string line = text;
+    std::replace(line.begin(), line.end(), '\n', ' ');
+    std::replace(line.begin(), line.end(), '\r', ' ');
+    out << "// " << what << ": " << line << "\n";
+  };
+  out << "// visfeat topology graph (every parameter, the nodes' positions and the "
+         "edges' crease angles are in its JSON form)\n";
+  if (!meta.source.empty())
+    comment("source", meta.source);
+  std::ostringstream cell;
+  cell.imbue(std::locale::classic());
+  cell.precision(9);
+  cell << meta.grid.cell_size << " (world units)";
+  comment("cell", cell.str());
+  for (const auto& [name, value] : meta.parameters)
+    if (name == "resolution" || name == "resolution_reason")
+      comment(name, value);
+  for (const std::string& w : meta.warnings)
+    comment("warning", w);
+  for (const std::string& n : meta.notes)
+    comment("note", n);
+  stream << out.str();
+  writeDot(stream);
+}
+
+void
 TopologyGraph::writeJson(std::ostream& out, const GraphMetadata& meta) const
 {
   using json = json_document::Json;
@@ -158,7 +192,7 @@ TopologyGraph::writeFile(const std::string& path, const GraphMetadata& meta) con
   if (!out)
     throw Error("cannot open '" + path + "' for writing");
   if (dot)
-    writeDot(out);
+    writeDot(out, meta);
   else
     writeJson(out, meta);
   out.flush();

@@ -236,6 +236,12 @@ public:
    * yellow ellipses; attributes cells and points. */
   void writeDot(std::ostream& out) const;
 
+  /** \brief writeDot() preceded by comment lines ("// ...", which GraphViz ignores)
+   * with what a reader needs to trust the graph: the source, the cell size, the
+   * resolution's reason where meta.parameters has "resolution_reason", each warning and
+   * note (the JSON has every parameter). */
+  void writeDot(std::ostream& out, const GraphMetadata& meta) const;
+
   /** \brief JSON (format "visfeat-topology-graph", version 1): source, grid,
    * parameters, counts, nodes (id, class, cells, points, centroid, min, max;
    * edges also crease_angle, null where not measured) and arcs [[a, b], ...] with a <
