@@ -109,6 +109,28 @@ roughPointsAdvice(bool shape)
                  "cells would make that worse: follow that warning first";
 }
 
+/** A resolution is advised against noise only if it leaves at least this many
+ * min_radius along the part (4: 64 cells at the defaults), where features half the
+ * part apart separate (they need 2 min_radius cells). A fresh user was told "a
+ * resolution of 20 or lower", then "7 or lower": no face can have a core there. */
+constexpr int kMinAdvisedResolutionRadii = 4;
+
+/** Whether `calmer`, the resolution where the noise would be calm, is worth advising
+ * (kMinAdvisedResolutionRadii). */
+inline bool
+calmerIsUseful(int calmer, int min_radius)
+{
+  return calmer >= kMinAdvisedResolutionRadii * min_radius;
+}
+
+/** What to say where the calm resolution is not worth advising. */
+inline std::string
+calmerTooCoarse(int calmer)
+{
+  return "a resolution calm enough (" + std::to_string(calmer) +
+         " or lower) would merge all features less than half the part apart";
+}
+
 /** Why the search stops where the next resolution is, or would be, too rough
  * (Run::search_cap_reason; keepUnderNoise()). */
 constexpr const char* kNoiseLimitReason = "what the points' noise allows";
@@ -307,9 +329,13 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::checkResults(const Results& re
     if (shape)
       r << "on points this sparse that is their shape, not noise (see the warning on "
            "their spread): sample denser";
-    else
+    else if (detail::calmerIsUseful(calmer, min_radius))
       r << "use noise mode (setNoiseMode(true)) or a resolution of " << calmer
         << " or lower";
+    else
+      r << "use noise mode (setNoiseMode(true)) or smooth the points first "
+           "(pcl::MovingLeastSquares): "
+        << detail::calmerTooCoarse(calmer);
     run.warnings.push_back(r.str());
   }
   if (run.point_noise > kNoisyPointNoise) {
@@ -337,12 +363,15 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::checkResults(const Results& re
         << " cells (RMS about the planes fitted to each point's neighbours; clean "
            "clouds give about 0, and counts break from about 0.17): the band filled "
            "between the points is as rough, and the result may be wrong; smooth the "
-           "points first (pcl::MovingLeastSquares; a denser sample is as noisy), or "
-           "use a resolution of "
-        << calmer << " or lower with the fill 'triangles' (setSurfaceFill()), where "
-        << "features need to lie about " << std::setprecision(3)
-        << 2 * min_radius * run.grid.cell_size * resolution / calmer
-        << " apart (world units)";
+           "points first (pcl::MovingLeastSquares; a denser sample is as noisy)";
+      if (detail::calmerIsUseful(calmer, min_radius))
+        r << ", or use a resolution of " << calmer
+          << " or lower with the fill 'triangles' (setSurfaceFill()), where "
+          << "features need to lie about " << std::setprecision(3)
+          << 2 * min_radius * run.grid.cell_size * resolution / calmer
+          << " apart (world units)";
+      else
+        r << ": " << detail::calmerTooCoarse(calmer);
     }
     run.warnings.insert(run.warnings.begin(), r.str()); // the cause of the others
   }

@@ -1,7 +1,8 @@
-// The automatic resolution's search on noisy points: finer cells make the same noise
-// larger in cells, so the search for narrow faces does not rise to a resolution where
-// the points are rough (kNoisyPointNoise, kNoisyRoughness), whether that is foreseen
-// from the noise measured or seen once the finer run is made.
+// Noisy points and the resolution: finer cells make the same noise larger in cells, so
+// the automatic search for narrow faces does not rise to a resolution where the points
+// are rough (kNoisyPointNoise, kNoisyRoughness), whether that is foreseen from the
+// noise measured or seen once the finer run is made; and the warnings advise no
+// resolution too coarse for any feature.
 
 #include "estimator_fixtures.h"
 
@@ -83,6 +84,39 @@ TEST(SearchUnderNoise, AFinerRunForeseenRoughIsNotMade)
             std::string::npos)
     << r.reason;
   EXPECT_NE(noiseStop(est), "");
+}
+
+TEST(NoiseAdvice, NoResolutionTooCoarseForAnyFeatureIsAdvised)
+{
+  // Noise of 1.5 cells at a set 256: the resolutions where it would be calm (0.1 cell)
+  // are about 20-45, where features must lie more than half the part apart. A fresh user was
+  // told "a resolution of 20 or lower", then "7 or lower"; such a resolution is no
+  // longer advised, smoothing is. Dense (band roughness) and sparse (the fill's point
+  // noise) clouds.
+  const syn::CadModel model =
+    syn::rotated(syn::cadModelByName("cube"), syn::randomRotation(14));
+  for (const std::size_t count : {std::size_t(250000), std::size_t(20000)}) {
+    syn::SamplingOptions options;
+    options.count = count;
+    options.seed = 14;
+    options.noise_sigma = 1.5 * model.bounds().sizes().maxCoeff() / 256.0;
+    Estimator est;
+    est.setInputCloud(cloudOf(syn::sampleCadModel(model, options)));
+    est.setResolution(256);
+    Output out;
+    est.compute(out);
+    ASSERT_EQ(est.getErrorMessage(), "");
+    bool noise_warned = false;
+    for (const std::string& w : est.getWarnings()) {
+      if (w.find("scatter about") == std::string::npos)
+        continue;
+      noise_warned = true;
+      EXPECT_EQ(w.find("a resolution of"), std::string::npos) << count << ": " << w;
+      EXPECT_NE(w.find("pcl::MovingLeastSquares"), std::string::npos) << w;
+      EXPECT_NE(w.find("half the part apart"), std::string::npos) << w;
+    }
+    EXPECT_TRUE(noise_warned) << count << " points: no noise warning";
+  }
 }
 
 } // namespace
