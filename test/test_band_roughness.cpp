@@ -208,7 +208,21 @@ TEST(BandRoughness, TheEstimatorWarnsOnANoisyCloudOutsideTheNoiseMode)
         EXPECT_NE(warning.find("use noise mode (setNoiseMode(true))"),
                   std::string::npos)
           << warning;
-        EXPECT_NE(warning.find("or a resolution of"), std::string::npos) << warning;
+        // the calm resolution (about 25) is below 4 min_radius: not advised, since
+        // every feature less than half the part apart would merge there
+        // (kMinAdvisedResolutionRadii; before 2026-12-07 it was, and this test
+        // expected it)
+        EXPECT_EQ(warning.find("or a resolution of"), std::string::npos) << warning;
+        EXPECT_NE(warning.find("half the part apart"), std::string::npos) << warning;
+        // with min_radius 4 the same resolution is worth advising
+        Estimator small;
+        small.setInputCloud(cloud);
+        small.setResolution(kResolution);
+        small.setMinRadius(4);
+        small.compute(out);
+        ASSERT_EQ(small.getErrorMessage(), "");
+        const std::string advice = roughnessWarning(small);
+        EXPECT_NE(advice.find("or a resolution of"), std::string::npos) << advice;
       } else {
         // clean, or smoothed by the noise mode before the band is built
         EXPECT_LT(roughness, visfeat::kNoisyRoughness)
