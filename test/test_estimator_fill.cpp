@@ -340,32 +340,6 @@ TEST(EstimatorFill, AFewHundredCleanPointsAreCalledSparseNotNoisy)
     }
 }
 
-TEST(EstimatorFill, AFillBeyondTheMemoryLimitIsRefusedBeforeItStarts)
-{
-  // 10,000 points of a cube at 1024 cells are about 13 cells apart: the band is filled
-  // between them, some 2 million cells of surface (about 400 MB), over a 64 MiB limit.
-  // The refusal comes before the fill; the points alone (10,000 cells) would pass, and
-  // the band's own check came only after the fill had been built (a cloud of 562,000
-  // points at 8192 cells rose past 15 GB in the fill).
-  const syn::CadModel model =
-    syn::rotated(syn::cadModelByName("cube"), syn::randomRotation(3));
-  Estimator est;
-  est.setInputCloud(sparseCloud(model, 10000, 3));
-  est.setResolution(1024);
-  est.setMemoryLimit(std::uint64_t{64} << 20);
-  Output out;
-  est.compute(out);
-  EXPECT_TRUE(out.empty());
-  const std::string& message = est.getErrorMessage();
-  EXPECT_EQ(message.rfind("filling the band between the points at resolution 1024 "
-                          "(at least ",
-                          0),
-            0u)
-    << message;
-  EXPECT_NE(message.find("more than the limit of 64.0 MiB"), std::string::npos)
-    << message;
-}
-
 TEST(EstimatorFill, ABandTooCoarseForItsFeaturesWarns)
 {
   // the cube at 40 cells: faces of about 20 cells, no core reaches min_radius 16

@@ -104,6 +104,17 @@ constexpr double kFillCheckPointsPerCell2 = 4.0;
  * 8192 (a fresh user's trial) rose past 15 GB in the fill before this check. */
 constexpr double kFillBytesPerCell = 200.0;
 
+/** \brief Bytes the fill between points (SurfaceFill::kLocalTriangles) needs per
+ * point besides kFillBytesPerCell: its neighbours and triangles. Where points lie less
+ * than a cell apart they, not the area, set its memory. Measured 2026-12-07 (peaks of
+ * whole runs, points 0.7 cells apart): the box with hole at 1024, 5.2 M points and 2.6
+ * M cells of area, 3.48 GB; at 2048, 20.9 M points and 10.2 M cells of area, 13.4 GB
+ * (before this term the check counted 0.5 and 2.0 GB, and a fill decided after the
+ * points band, as these were, was not checked at all). A fit over those and the cube
+ * above gives about 190 bytes a cell of area and 580 a point; 450 keeps the estimate
+ * at 82-94% of each measured peak, so no run that fits is refused. */
+constexpr double kFillBytesPerPoint = 450.0;
+
 /** \brief At a set resolution, a points band whose spacing was not measured (a cloud
  * of kFillCheckPointsPerCell2 points per cell^2 or more) is checked after all when
  * more of its cells than this were added by the repair: then the spacing is measured,

@@ -310,7 +310,8 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::checkMemoryBudget(
   // Refuse before allocating the band: the cells of the points are at most the points;
   // a fill makes cells between them, at least one a cell area of the surface (the
   // mesh's area, or the points' count times their spacing squared), and holds each
-  // about kFillBytesPerCell while it rasterises. The free space and the map are checked
+  // about kFillBytesPerCell while it rasterises (a fill between points also
+  // kFillBytesPerPoint a point). The free space and the map are checked
   // again once the band is known (checkBandMemory).
   const GridSpec& grid = run.grid;
   const std::size_t points = surface_->size();
@@ -323,15 +324,21 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::checkMemoryBudget(
   const double fill_cells =
     cell_area > 0.0 ? std::min(surface_area / cell_area, double(grid.cellCount()))
                     : 0.0;
+  // the fill between points also holds each point's neighbours and triangles
+  const bool between_points = run.fill == SurfaceFill::kLocalTriangles;
   if (fill_cells > 0.0)
-    checkMemory(static_cast<std::uint64_t>(fill_cells * kFillBytesPerCell),
+    checkMemory(static_cast<std::uint64_t>(
+                  fill_cells * kFillBytesPerCell +
+                  (between_points ? double(points) * kFillBytesPerPoint : 0.0)),
                 memory_limit_,
                 "filling the band between " +
-                  std::string(run.fill == SurfaceFill::kMesh ? "the mesh's triangles"
-                                                             : "the points") +
+                  std::string(between_points ? "the points" : "the mesh's triangles") +
                   " at resolution " + std::to_string(run.resolution.resolution) +
                   " (at least " + std::to_string(std::llround(fill_cells)) +
-                  " cells: the surface's area in cells)");
+                  " cells: the surface's area in cells" +
+                  (between_points ? ", and " + std::to_string(points) + " points"
+                                  : std::string()) +
+                  ")");
   const std::size_t cells =
     static_cast<std::size_t>(std::min<std::uint64_t>(points, grid.cellCount()));
   const int threads = resolveThreads(run.visibility.threads);
@@ -507,9 +514,14 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::computeResults(
   } else {
     results.band =
       buildVoxelBand(*surface, run.grid, band_options, fillCells(run, *surface));
-    if (refillSparseBand(run, results.band))
+    if (refillSparseBand(run, results.band)) {
+      // the fill decided now is checked as one decided before the band (it was not:
+      // the box with hole at 2048, 0.7 cells apart, filled up to 13.4 GB unchecked)
+      results.band = VoxelBand();
+      checkMemoryBudget(run);
       results.band =
         buildVoxelBand(*surface, run.grid, band_options, fillCells(run, *surface));
+    }
   }
   run.times.band_ms = detail::millisecondsSince(start);
 
