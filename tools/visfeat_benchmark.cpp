@@ -13,6 +13,7 @@
 #include <visfeat/core/visibility/free_space.h>
 #include <visfeat/core/visibility/visibility_map.h>
 #include <visfeat/point_types.h>
+#include <visfeat/surface_fill.h>
 #include <visfeat/visibility_feature_estimation.h>
 
 #include <pcl/console/parse.h>
@@ -91,6 +92,14 @@ printHelp(const char* program)
   print_value("%g", kSpacingCells);
   print_info("; up to 0.7 keeps the band connected, e.g. for 2048 cells where\n"
              "                          0.5 would not fit in memory)\n");
+  print_info(
+    "    -fill F             = where the band comes from: auto (default: the "
+    "estimator's\n"
+    "                          choice; triangles for points over 0.55 cells "
+    "apart), points,\n"
+    "                          triangles, or mesh (the model's tessellation, "
+    "0.05 cells,\n"
+    "                          rasterised; the points only take the labels)\n");
   print_info("    -no_baseline        = skip PCL's normal estimation\n");
   print_info("    -csv                = comma-separated output (notes go to "
              "stderr)\n");
@@ -303,6 +312,8 @@ struct Settings
   double opacity = kDefaultOpacity;
   long long seed = 1;
   double spacing = kSpacingCells; // cells
+  /** kMesh: the model's tessellation gives the band (setInputMesh()). */
+  visfeat::SurfaceFill fill = visfeat::SurfaceFill::kAuto;
   bool baseline = true;
   bool csv = false;
 };
@@ -311,6 +322,7 @@ Row
 runVisfeat(const Settings& s,
            int resolution,
            const pcl::PointCloud<pcl::PointXYZ>::ConstPtr& cloud,
+           const std::shared_ptr<const visfeat::SurfaceMesh>& mesh,
            const PeakMemory& memory)
 {
   Row best;
@@ -323,6 +335,9 @@ runVisfeat(const Settings& s,
     visfeat::VisibilityFeatureEstimation<pcl::PointXYZ, visfeat::PointVisibility>
       estimator;
     estimator.setInputCloud(cloud);
+    if (mesh)
+      estimator.setInputMesh(mesh);
+    estimator.setSurfaceFill(s.fill);
     estimator.setResolution(resolution);
     estimator.setMaxRadius(s.max_radius);
     estimator.setMinRadius(s.max_radius); // components up to the cap
@@ -404,7 +419,7 @@ run(int argc, char** argv)
 {
   const vt::Arguments args(argc, argv,
                            {"-shapes", "-resolutions", "-threads", "-repeat",
-                            "-max_radius", "-opacity", "-seed", "-spacing"},
+                            "-max_radius", "-opacity", "-seed", "-spacing", "-fill"},
                            {"-no_baseline", "-csv", "-h", "--help"});
   if (!args.ok())
     return fail(args.error());
@@ -424,6 +439,10 @@ run(int argc, char** argv)
                        error) ||
       !args.getReal("-spacing", 0.05, 2.0, s.spacing, error))
     return fail(error);
+  if (args.has("-fill") && (!visfeat::parseSurfaceFill(args.value("-fill"), s.fill) ||
+                            s.fill == visfeat::SurfaceFill::kOrganized))
+    return fail("-fill expects auto, points, triangles or mesh, got '" +
+                args.value("-fill") + "'");
   s.baseline = !args.has("-no_baseline");
   s.csv = args.has("-csv");
 
@@ -460,10 +479,14 @@ run(int argc, char** argv)
   std::fprintf(
     notes,
     "# machine: %u hardware threads (OpenMP: %d); threads used: %d%s; repeat %d "
-    "(best reported); max_radius %d; opacity %g; seed %lld; spacing %g cells\n",
+    "(best reported); max_radius %d; opacity %g; seed %lld; spacing %g cells; fill "
+    "%s\n",
     std::thread::hardware_concurrency(), omp_threads,
     s.threads == 0 ? omp_threads : s.threads, s.threads == 0 ? " (all)" : "", s.repeat,
-    s.max_radius, s.opacity, s.seed, s.spacing);
+    s.max_radius, s.opacity, s.seed, s.spacing,
+    s.fill == visfeat::SurfaceFill::kMesh
+      ? "mesh (the model's tessellation, 0.05 cells)"
+      : visfeat::surfaceFillName(s.fill));
   std::fprintf(notes, "# peak_MiB: %s\n",
                memory.perRun()
                  ? "peak resident memory during each run (VmHWM, reset before "
@@ -496,9 +519,15 @@ run(int argc, char** argv)
         cloud->is_dense = true;
       }
 
+      std::shared_ptr<const visfeat::SurfaceMesh> mesh;
+      if (s.fill == visfeat::SurfaceFill::kMesh)
+        mesh = std::make_shared<visfeat::SurfaceMesh>(
+          visfeat::synthetic::tessellateCadModel(
+            model, 0.05 * visfeat::synthetic::cellSize(model, resolution))
+            .mesh);
       Row v;
       try {
-        v = runVisfeat(s, resolution, cloud, memory);
+        v = runVisfeat(s, resolution, cloud, mesh, memory);
       } catch (const std::exception& e) {
         v.method = "visfeat";
         v.points = cloud->size();
