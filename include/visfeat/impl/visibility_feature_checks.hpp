@@ -1,10 +1,14 @@
-// VisibilityFeatureEstimation (not for inclusion on its own): the checks that say when
-// a result cannot be trusted, and why (the band, the map, the noise, the graph).
+// VisibilityFeatureEstimation (not for inclusion on its own): the checks that refuse a
+// run before it allocates more than the memory limit, and those that say when a result
+// cannot be trusted, and why (the band, the map, the noise, the graph).
 #pragma once
 
 #include <visfeat/core/band/band_pieces.h>
 #include <visfeat/core/band/tangent_planes.h>
+#include <visfeat/core/common/memory_budget.h>
+#include <visfeat/core/common/threads.h>
 #include <visfeat/core/graph/graph_gaps.h>
+#include <visfeat/core/mesh/mesh_sampling.h>
 #include <visfeat/core/segmentation/merged_valleys.h>
 #include <visfeat/impl/visibility_feature_estimation.hpp>
 
@@ -426,6 +430,70 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::checkGraph(const Results& resu
     w << " (if the cloud is an open scan, its border also leaves edges without their "
          "outer corner)";
   run.warnings.push_back(w.str());
+}
+
+template <typename PointInT, typename PointOutT>
+void
+VisibilityFeatureEstimation<PointInT, PointOutT>::checkMemoryBudget(
+  const Run& run) const
+{
+  // Refuse before allocating the band: the cells of the points are at most the points;
+  // a fill makes cells between them, at least one a cell area of the surface (the
+  // mesh's area, or the points' count times their spacing squared), and holds each
+  // about kFillBytesPerCell while it rasterises (a fill between points also
+  // kFillBytesPerPoint a point). The free space and the map are checked
+  // again once the band is known (checkBandMemory).
+  const GridSpec& grid = run.grid;
+  const std::size_t points = surface_->size();
+  const double cell_area = grid.cell_size * grid.cell_size;
+  double surface_area = 0.0;
+  if (run.fill == SurfaceFill::kMesh && mesh_)
+    surface_area = meshArea(*mesh_);
+  else if (run.fill == SurfaceFill::kLocalTriangles && run.resolution.spacing > 0.0)
+    surface_area = double(points) * run.resolution.spacing * run.resolution.spacing;
+  const double fill_cells =
+    cell_area > 0.0 ? std::min(surface_area / cell_area, double(grid.cellCount()))
+                    : 0.0;
+  // the fill between points also holds each point's neighbours and triangles
+  const bool between_points = run.fill == SurfaceFill::kLocalTriangles;
+  if (fill_cells > 0.0)
+    checkMemory(static_cast<std::uint64_t>(
+                  fill_cells * kFillBytesPerCell +
+                  (between_points ? double(points) * kFillBytesPerPoint : 0.0)),
+                memory_limit_,
+                "filling the band between " +
+                  std::string(between_points ? "the points" : "the mesh's triangles") +
+                  " at resolution " + std::to_string(run.resolution.resolution) +
+                  " (at least " + std::to_string(std::llround(fill_cells)) +
+                  " cells: the surface's area in cells" +
+                  (between_points ? ", and " + std::to_string(points) + " points"
+                                  : std::string()) +
+                  ")");
+  const std::size_t cells =
+    static_cast<std::size_t>(std::min<std::uint64_t>(points, grid.cellCount()));
+  const int threads = resolveThreads(run.visibility.threads);
+  const std::uint64_t octree_bytes = std::uint64_t{160} * cells + 4 * points;
+  const std::uint64_t estimate =
+    VoxelBand::estimateBytes(grid, cells, points) + octree_bytes +
+    std::uint64_t{4} * cells * static_cast<std::uint64_t>(threads) +
+    (run.smoothing.radius > 0.0 ? (sizeof(PointInT) + 40) * std::uint64_t{points} : 0);
+  checkMemory(estimate, memory_limit_,
+              "a grid of " + std::to_string(grid.dims.x()) + "x" +
+                std::to_string(grid.dims.y()) + "x" + std::to_string(grid.dims.z()) +
+                " cells");
+}
+
+template <typename PointInT, typename PointOutT>
+void
+VisibilityFeatureEstimation<PointInT, PointOutT>::checkBandMemory(
+  const VoxelBand& band, std::uint64_t mask_bytes, const Run& run) const
+{
+  // Counted from the band itself: the sparse mask's bricks, the map's working set.
+  const std::uint64_t estimate = band.memoryBytes() + mask_bytes +
+                                 VisibilityMap::estimateBytes(band, run.visibility);
+  checkMemory(estimate, memory_limit_,
+              "the free space and visibility map of " + std::to_string(band.size()) +
+                " mixed cells");
 }
 
 } // namespace visfeat
