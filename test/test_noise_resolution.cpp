@@ -89,10 +89,10 @@ TEST(SearchUnderNoise, AFinerRunForeseenRoughIsNotMade)
 TEST(NoiseAdvice, NoResolutionTooCoarseForAnyFeatureIsAdvised)
 {
   // Noise of 1.5 cells at a set 256: the resolutions where it would be calm (0.1 cell)
-  // are about 20-45, where features must lie more than half the part apart. A fresh user was
-  // told "a resolution of 20 or lower", then "7 or lower"; such a resolution is no
-  // longer advised, smoothing is. Dense (band roughness) and sparse (the fill's point
-  // noise) clouds.
+  // are about 20-45, where features must lie more than half the part apart. A fresh
+  // user was told "a resolution of 20 or lower", then "7 or lower"; such a resolution
+  // is no longer advised, smoothing is. Dense (band roughness) and sparse (the fill's
+  // point noise) clouds.
   const syn::CadModel model =
     syn::rotated(syn::cadModelByName("cube"), syn::randomRotation(14));
   for (const std::size_t count : {std::size_t(250000), std::size_t(20000)}) {
@@ -117,6 +117,59 @@ TEST(NoiseAdvice, NoResolutionTooCoarseForAnyFeatureIsAdvised)
     }
     EXPECT_TRUE(noise_warned) << count << " points: no noise warning";
   }
+}
+
+/** `count` points of a generated model under rotation `seed`, with Gaussian noise of
+ * `sigma` cells at 256, computed at the automatic resolution. */
+void
+computeNoisy(Estimator& est,
+             const std::string& name,
+             std::size_t count,
+             std::uint64_t seed,
+             double sigma,
+             bool noise_mode)
+{
+  const syn::CadModel model =
+    syn::rotated(syn::cadModelByName(name), syn::randomRotation(seed));
+  syn::SamplingOptions options;
+  options.count = count;
+  options.seed = seed;
+  options.noise_sigma = sigma * model.bounds().sizes().maxCoeff() / 256.0;
+  est.setInputCloud(cloudOf(syn::sampleCadModel(model, options)));
+  est.setResolution(0);
+  est.setNoiseMode(noise_mode);
+  Output out;
+  est.compute(out);
+  ASSERT_EQ(est.getErrorMessage(), "");
+}
+
+TEST(NoiseAdvice, NoiseModeIsNamedWhereItsSmoothingHoldsEnoughPoints)
+{
+  // The box with hole, 150,000 points, noise 0.3 cells at 256: lowered to about 107,
+  // 2/9/4. Noise mode's smoothing (2 cells) holds about 12 points at 256, so the
+  // warning names it (kNoiseModeSmoothedPoints), and following it gives the box's
+  // exact counts. From 40,000 points (4 points in the disc, 5/10/8 lowered and 3/5/4
+  // in noise mode for the stepped block) it does not.
+  Estimator lowered;
+  computeNoisy(lowered, "box_with_hole", 150000, 3, 0.3, false);
+  ASSERT_FALSE(lowered.getWarnings().empty());
+  const std::string& first = lowered.getWarnings().front();
+  EXPECT_NE(first.find("for the points' noise"), std::string::npos) << first;
+  EXPECT_NE(first.find("or use noise mode (setNoiseMode(true))"), std::string::npos)
+    << first;
+
+  Estimator followed;
+  computeNoisy(followed, "box_with_hole", 150000, 3, 0.3, true);
+  const syn::CadModel truth = syn::cadModelByName("box_with_hole");
+  const auto c = counts(followed);
+  EXPECT_EQ(c[0], truth.vertices.size());
+  EXPECT_EQ(c[1], truth.curves.size());
+  EXPECT_EQ(c[2], truth.faces.size());
+
+  Estimator sparse;
+  computeNoisy(sparse, "stepped_block", 40000, 2, 0.3, false);
+  for (const std::string& w : sparse.getWarnings())
+    EXPECT_EQ(w.find("noise mode"), std::string::npos) << w;
 }
 
 } // namespace

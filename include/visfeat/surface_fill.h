@@ -163,6 +163,24 @@ constexpr double kNoisyPointNoise = 0.13;
  * 14 lowered to about 100; sigma 0.5 (0.4): 0 of 14, 2 of 14 lowered to about 60. */
 constexpr double kLowerForPointNoise = 0.2;
 
+/** \brief Where the automatic resolution is lowered for the points' noise, the warning
+ * also names noise mode when its smoothing disc (kNoiseSmoothingRadius cells, at the
+ * resolution before lowering) holds at least this many points: 8. Measured 2026-12-07
+ * (noise 0.3 cells at 256, automatic resolution, without and with noise mode): the
+ * generated stepped block from 150,000 points (19 points in the disc) 6/10/8 at 112
+ * and 8/18/11 at 256 (truth 16/24/10); the box with hole from 150,000 (12) 2/9/4 and
+ * 8/14/7 (exact); a fresh user's scan of the CGAL part, 200,000 points (16), 0/3/3 and
+ * 3/11/6 (truth 2/5/5); but the stepped block from 40,000 (4 points) 5/10/8 and 3/5/4:
+ * the smoothing holds too few. */
+constexpr double kNoiseModeSmoothedPoints = 8.0;
+
+/** \brief ... and when the points' noise (getPointNoise(), cells, at the resolution
+ * before lowering) is at most this: 0.35, about sigma 0.4 by its 0.85-0.9 sigma
+ * reading; noise mode recovers every generated model at sigma 0.32 and 6 of 7 at 0.45
+ * (README, "Evaluation"). The fresh user's heavier scan (0.375 there, sigma about 1.1
+ * read low on its dense points) went to 68 cells in noise mode too. */
+constexpr double kNoiseModeMaxPointNoise = 0.35;
+
 /** \brief The roughness the warning's suggested resolution aims at, cells: 0.10 (sigma
  * about 0.12, exact on every generated model, see kNoisyRoughness). */
 constexpr double kCalmRoughness = 0.10;
