@@ -36,7 +36,9 @@ plyProblem(const std::string& path)
   bool red = false;
   // the least number of data bytes the declared elements need
   unsigned long long element_count = 0, element_bytes = 0, needed = 0;
+  unsigned long long declared = 0; // element instances: one line each in an ASCII file
   const auto closeElement = [&]() {
+    declared += element_count;
     const unsigned long long limit = ~0ULL / 2;
     needed = element_bytes != 0 && element_count > (limit - needed) / element_bytes
                ? limit
@@ -100,6 +102,18 @@ plyProblem(const std::string& path)
     return "the header declares elements needing at least " + std::to_string(needed) +
            " bytes of data, but the file holds " + std::to_string(data) +
            " after its header (truncated, or its counts are wrong)";
+  if (format != "ascii")
+    return "";
+  // an ASCII element per line: fewer lines than declared gave PCL's "could not be
+  // parsed" without a count (a fresh user's truncated file)
+  unsigned long long lines = 0;
+  while (lines < declared && std::getline(in, line))
+    if (line.find_first_not_of(" \t\r") != std::string::npos)
+      ++lines;
+  if (lines < declared)
+    return "the header declares " + std::to_string(declared) +
+           " elements (one a line), but the file holds " + std::to_string(lines) +
+           " data lines after its header (truncated, or its counts are wrong)";
   return "";
 }
 

@@ -15,7 +15,9 @@ namespace visfeat_tools {
  *   properties' bytes per element (a list's count, at least) in a binary file, two
  *   characters per property in an ASCII one. PCL allocates the declared vertices
  *   first: a 36-byte file declaring 10^9 vertices took 58 s and 11.7 GB before it
- *   failed. */
+ *   failed;
+ * - in an ASCII file, fewer non-blank data lines than the declared elements (PCL then
+ *   said only that the file could not be parsed). */
 std::string plyProblem(const std::string& path);
 
 } // namespace visfeat_tools

@@ -178,7 +178,8 @@ TEST_F(InputGuards, PlyProblemRefusesAListPropertyOfTheVertexElement)
                                          "property list uchar int vertex_indices\n"
                                          "end_header\n0 0 0\n1 0 0\n3 0 1 0\n")),
     "");
-  EXPECT_EQ(vt::plyProblem(write("c.ply", head + "end_header\nproperty list a b c\n")),
+  EXPECT_EQ(vt::plyProblem(write("c.ply", head + "end_header\nproperty list a b c\n"
+                                                 "0 0 0\n")),
             "");
   // 'blue' without 'red': the next property was written past the point (assertion)
   EXPECT_EQ(
@@ -224,6 +225,16 @@ TEST_F(InputGuards, PlyProblemRefusesCountsTheFileCannotHold)
                                               "element vertex 2\n" +
                                                 props + "end_header\n0 0 0\n1 1 1\n")),
             "");
+  // ASCII lines long enough for the byte count, but fewer than the elements (a fresh
+  // user's truncated file got "could not be parsed" without a count)
+  EXPECT_EQ(vt::plyProblem(write("short.ply", "ply\nformat ascii 1.0\n"
+                                              "element vertex 5\n" +
+                                                props +
+                                                "end_header\n0.000 0.000 0.000\n"
+                                                "1.000 1.000 1.000\n\n"
+                                                "2.000 2.000 2.000\n")),
+            "the header declares 5 elements (one a line), but the file holds 3 data "
+            "lines after its header (truncated, or its counts are wrong)");
 }
 
 TEST(ReadOff, RefusesAFaceCountThatWrapsAround)
