@@ -477,6 +477,9 @@ private:
   /** An automatic points band with holes: true when run's fill changed, to build. */
   bool refillSparseBand(Run& run, const VoxelBand& band) const;
   void checkResults(const Results& results, Run& run) const;
+  /** The warnings on rough points: the band's roughness outside noise mode
+   * (kNoisyRoughness) and the noise the fill measured (kNoisyPointNoise). */
+  void checkNoise(const VoxelBand& band, Run& run) const;
   /** A warning where the graph is not that of a closed part (findGraphGaps()). */
   void checkGraph(const Results& results, Run& run) const;
   void checkMemoryBudget(const Run& run) const;

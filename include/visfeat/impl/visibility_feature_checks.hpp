@@ -32,6 +32,15 @@ roughPoints(double band_roughness, bool noise_mode, double point_noise)
          point_noise > kNoisyPointNoise;
 }
 
+/** How rough the points read, cells: the noise the fill measured, or the band's
+ * roughness outside noise mode, whichever is larger (what roughPoints() compares with
+ * their limits, both 0.13). */
+inline double
+pointRoughness(double band_roughness, bool noise_mode, double point_noise)
+{
+  return std::max(point_noise, noise_mode ? 0.0 : band_roughness);
+}
+
 /** Why the search for narrow faces stops where it does when nothing but its own limit
  * stops it (Run::search_cap_reason); any other reason is what the points support. */
 constexpr const char* kSearchLimitReason = "the search's limit";
@@ -321,6 +330,30 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::checkResults(const Results& re
     }
     run.warnings.push_back(w.str());
   }
+  checkNoise(band, run);
+  if (holes) {
+    std::ostringstream r;
+    r << "the band has holes: " << band.repairCellCount() << " of " << band.size()
+      << " cells were added to close it (the points are sparser than the cells)";
+    if (run.fill == SurfaceFill::kPoints)
+      r << "; fill the band between the points (fill 'triangles') or lower the "
+           "resolution";
+    else
+      r << "; lower the resolution";
+    run.warnings.push_back(r.str());
+  }
+  checkGraph(results, run);
+  if (run.warnings.empty()) // the graph looks whole, yet creases may have merged
+    detail::warnMergedValleys(results, run, max_search_resolution_);
+}
+
+template <typename PointInT, typename PointOutT>
+void
+VisibilityFeatureEstimation<PointInT, PointOutT>::checkNoise(const VoxelBand& band,
+                                                             Run& run) const
+{
+  const int min_radius = run.segmentation.components.min_radius;
+  const int resolution = run.resolution.resolution;
   if (!noise_mode_ && band.roughness() > kNoisyRoughness) {
     const int calmer = detail::calmerResolution(resolution, band.roughness());
     std::ostringstream r;
@@ -379,20 +412,6 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::checkResults(const Results& re
     }
     run.warnings.insert(run.warnings.begin(), r.str()); // the cause of the others
   }
-  if (holes) {
-    std::ostringstream r;
-    r << "the band has holes: " << band.repairCellCount() << " of " << band.size()
-      << " cells were added to close it (the points are sparser than the cells)";
-    if (run.fill == SurfaceFill::kPoints)
-      r << "; fill the band between the points (fill 'triangles') or lower the "
-           "resolution";
-    else
-      r << "; lower the resolution";
-    run.warnings.push_back(r.str());
-  }
-  checkGraph(results, run);
-  if (run.warnings.empty()) // the graph looks whole, yet creases may have merged
-    detail::warnMergedValleys(results, run, max_search_resolution_);
 }
 
 template <typename PointInT, typename PointOutT>

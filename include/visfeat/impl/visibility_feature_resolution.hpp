@@ -319,11 +319,12 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::searchResolution(
     // cells at 256 after smoothing, 0.52 at 512, 1.10 at 1024, and 130/219/134 for
     // 2/5/5; 256 gives 3/11/6).
     const double finer_by = static_cast<double>(next) / current;
-    const double band_roughness = noise_mode_ ? 0.0 : results.band.roughness();
-    if (run.point_noise * finer_by > kNoisyPointNoise ||
-        band_roughness * finer_by > kNoisyRoughness) {
+    if (detail::roughPoints(results.band.roughness() * finer_by, noise_mode_,
+                            run.point_noise * finer_by)) {
       keepUnderNoise(results, run, found.str(), next,
-                     std::max(run.point_noise, band_roughness) * finer_by, true);
+                     finer_by * detail::pointRoughness(results.band.roughness(),
+                                                       noise_mode_, run.point_noise),
+                     true);
       break;
     }
     Run finer = base;
@@ -345,8 +346,8 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::searchResolution(
                               finer.point_noise)) {
         discarded_ms += finer.times.total() - finer.times.shape_ms;
         keepUnderNoise(results, run, found.str(), next,
-                       std::max(finer.point_noise,
-                                noise_mode_ ? 0.0 : finer_results->band.roughness()),
+                       detail::pointRoughness(finer_results->band.roughness(),
+                                              noise_mode_, finer.point_noise),
                        false);
         break;
       }

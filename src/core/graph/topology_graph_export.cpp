@@ -116,11 +116,7 @@ TopologyGraph::writeDot(std::ostream& stream, const GraphMetadata& meta) const
          "edges' crease angles are in its JSON form)\n";
   if (!meta.source.empty())
     comment("source", meta.source);
-  std::ostringstream cell;
-  cell.imbue(std::locale::classic());
-  cell.precision(9);
-  cell << meta.grid.cell_size << " (world units)";
-  comment("cell", cell.str());
+  out << "// cell: " << meta.grid.cell_size << " (world units)\n";
   for (const auto& [name, value] : meta.parameters)
     if (name == "resolution" || name == "resolution_reason")
       comment(name, value);
