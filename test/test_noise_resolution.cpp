@@ -20,21 +20,25 @@ namespace {
 
 using namespace visfeat_test::estimator;
 
-/** The stepped block (narrow faces at 256: its risers) under a rotation, `count`
- * points with Gaussian noise of 0.3 cells at 256, in noise mode with the automatic
- * resolution. */
+/** `count` points of a generated model under rotation `seed`, with Gaussian noise of
+ * `sigma` cells at 256, computed at the automatic resolution. */
 void
-computeNoisyStepped(Estimator& est, std::size_t count, std::uint64_t seed)
+computeNoisy(Estimator& est,
+             const std::string& name,
+             std::size_t count,
+             std::uint64_t seed,
+             double sigma,
+             bool noise_mode)
 {
   const syn::CadModel model =
-    syn::rotated(syn::cadModelByName("stepped_block"), syn::randomRotation(seed));
+    syn::rotated(syn::cadModelByName(name), syn::randomRotation(seed));
   syn::SamplingOptions options;
   options.count = count;
   options.seed = seed;
-  options.noise_sigma = 0.3 * model.bounds().sizes().maxCoeff() / 256.0;
+  options.noise_sigma = sigma * model.bounds().sizes().maxCoeff() / 256.0;
   est.setInputCloud(cloudOf(syn::sampleCadModel(model, options)));
   est.setResolution(0);
-  est.setNoiseMode(true);
+  est.setNoiseMode(noise_mode);
   Output out;
   est.compute(out);
   ASSERT_EQ(est.getErrorMessage(), "");
@@ -58,7 +62,7 @@ TEST(SearchUnderNoise, AFinerRunThatTurnsOutRoughIsDropped)
   // 116/114/79 for 16/24/10 after 36 s; the fresh user's scan of the CGAL part the
   // same (130/219/134 for 2/5/5).
   Estimator est;
-  computeNoisyStepped(est, 150000, 1);
+  computeNoisy(est, "stepped_block", 150000, 1, 0.3, true); // risers: narrow faces
   const visfeat::ResolutionEstimate& r = est.getResolutionEstimate();
   EXPECT_EQ(r.resolution, 256) << r.reason;
   EXPECT_LT(est.getPointNoise(), visfeat::kNoisyPointNoise);
@@ -77,7 +81,7 @@ TEST(SearchUnderNoise, AFinerRunForeseenRoughIsNotMade)
   // is about 0.2 cells at 256, so at 512 it would be at least 0.4: not tried (before,
   // the run at 512 gave 0/0/1 with noise 0.5 cells).
   Estimator est;
-  computeNoisyStepped(est, 40000, 2);
+  computeNoisy(est, "stepped_block", 40000, 2, 0.3, true);
   const visfeat::ResolutionEstimate& r = est.getResolutionEstimate();
   EXPECT_LE(r.resolution, 256) << r.reason;
   EXPECT_NE(r.reason.find("kept, since at 512 the points would scatter at least"),
@@ -117,30 +121,6 @@ TEST(NoiseAdvice, NoResolutionTooCoarseForAnyFeatureIsAdvised)
     }
     EXPECT_TRUE(noise_warned) << count << " points: no noise warning";
   }
-}
-
-/** `count` points of a generated model under rotation `seed`, with Gaussian noise of
- * `sigma` cells at 256, computed at the automatic resolution. */
-void
-computeNoisy(Estimator& est,
-             const std::string& name,
-             std::size_t count,
-             std::uint64_t seed,
-             double sigma,
-             bool noise_mode)
-{
-  const syn::CadModel model =
-    syn::rotated(syn::cadModelByName(name), syn::randomRotation(seed));
-  syn::SamplingOptions options;
-  options.count = count;
-  options.seed = seed;
-  options.noise_sigma = sigma * model.bounds().sizes().maxCoeff() / 256.0;
-  est.setInputCloud(cloudOf(syn::sampleCadModel(model, options)));
-  est.setResolution(0);
-  est.setNoiseMode(noise_mode);
-  Output out;
-  est.compute(out);
-  ASSERT_EQ(est.getErrorMessage(), "");
 }
 
 TEST(NoiseAdvice, NoiseModeIsNamedWhereItsSmoothingHoldsEnoughPoints)
