@@ -32,6 +32,7 @@ Run (from the repository root, with a Release build):
       [--visfeat build/tools/visfeat] [--threads 2] \
       [--visfeat-option '-min_crease_angle 30'] [--analyse] \
       [--points-per-cell2 1.5]   (sparser clouds: 1.5 = 0.82 cells apart)
+      [--no-pcl]   (visfeat alone: PCL's columns NaN, e.g. an A/B of visfeat's changes)
 Needs numpy (apt-get install python3-numpy); scripts/install_deps.sh does not
 install it, as neither the tests nor the demo use this script.
 """
@@ -474,6 +475,11 @@ def evaluate(name, a):
     near2, near1 = d <= 2, d <= 1
     vp, vr, vf1 = prf(np.isin(out["feature_class"], (1, 2)), near2, near1)
 
+    if a.no_pcl:  # visfeat alone (an A/B of visfeat's own changes)
+        pp = pr = pf1 = pt = pcl_s = float("nan")
+        return dict(mesh=name, R=resolution, points=len(P), vef=vef, sharp=len(E), tv=tv,
+                    tc=tc, P=vp, Rc=vr, F1=vf1, vs=vf_s, pP=pp, pR=pr, pF1=pf1, pt=pt,
+                    ps=pcl_s, cell=vcell, ourcell=cell, notes=notes)
     t0 = time.time()
     res = subprocess.run(["pcl_normal_estimation", stem + "_in.pcd", stem + "_normals.pcd", "-k", str(a.k)],
                          capture_output=True, text=True)
@@ -509,6 +515,8 @@ def main():
     ap.add_argument("--visfeat-option", action="append", default=[],
                     help="an option for visfeat, e.g. '-min_crease_angle 30' (repeatable); "
                          "given to the automatic-resolution run on the mesh too")
+    ap.add_argument("--no-pcl", action="store_true",
+                    help="skip PCL's normal estimation (visfeat's scores alone)")
     ap.add_argument("--analyse", action="store_true",
                     help="also say where the false positives lie: near edges up to 10 "
                          "degrees below --angle, and near contacts of a mesh's parts")

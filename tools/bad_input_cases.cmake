@@ -35,6 +35,7 @@ set(VISFEAT_BAD_INPUT_CASES
   "resolution_over_memory|more than the limit of 1.0 MiB: lower the resolution"
   "threads_negative|-threads must be in&&got -1"
   "narrow_persistence_huge|-narrow_persistence must be in&&got 99"
+  "flat_variation_huge|-flat_variation must be in&&got 0.5"
   "opacity_nan|-opacity expects a number, got 'nan'"
   "min_radius_above_max|-min_radius 20 exceeds -max_radius 10"
   "flat_cores_and_no_flat_cores|-flat_cores and -no_flat_cores contradict each other"

@@ -178,6 +178,7 @@ configureEstimator(Estimator& estimator,
   estimator.setFlatCoreFaces(opt.flat_cores);
   estimator.setDimensionality(opt.dimensionality);
   estimator.setMinCreaseAngle(opt.min_crease_angle);
+  estimator.setFlatPointVariation(opt.flat_variation);
   estimator.setRawMode(opt.raw);
   estimator.setCompleteRegions(opt.regions);
   estimator.setOpacity(opt.opacity);

@@ -36,7 +36,7 @@ valueOptions()
     "-png_radius",      "-png_size",       "-fill",
     "-fill_neighbours", "-fill_gap",       "-fill_edge",
     "-fill_inset",      "-fill_votes",     "-narrow_persistence",
-    "-max_search_resolution"};
+    "-max_search_resolution", "-flat_variation"};
   // clang-format on
   return names;
 }
@@ -120,6 +120,14 @@ printHelp(const char* program)
   print_info(" degrees; %g-%g, 0 = off)\n",
              visfeat::CreaseAngleParameters::kMinCreaseAngleRange.min,
              visfeat::CreaseAngleParameters::kMinCreaseAngleRange.max);
+  print_info("    -flat_variation V = an edge or vertex point whose points within "
+             "point_feature_distance + %g cells have a surface variation of at most V "
+             "lies on flat ground: it goes to the nearest face (default: ",
+             visfeat::FlatPointParameters::kMargin);
+  print_value("%g", visfeat::FlatPointParameters::kDefaultMaxSurfaceVariation);
+  print_info("; %g-%g, 0 = off)\n",
+             visfeat::FlatPointParameters::kMaxSurfaceVariationRange.min,
+             visfeat::FlatPointParameters::kMaxSurfaceVariationRange.max);
   print_info("    -raw              = the paper's literal components (no regions, no "
              "clean-up)\n");
   print_info("    -no_regions       = label the components' cores only, not every "
@@ -230,6 +238,8 @@ readValues(const Arguments& args, Options& opt, std::string& error)
       !real("-dimensionality", Components::kDimensionalityRange, opt.dimensionality) ||
       !real("-min_crease_angle", visfeat::CreaseAngleParameters::kMinCreaseAngleRange,
             opt.min_crease_angle) ||
+      !real("-flat_variation", visfeat::FlatPointParameters::kMaxSurfaceVariationRange,
+            opt.flat_variation) ||
       !real("-opacity", Visibility::kOpacityRange, opt.opacity) ||
       !real("-smooth", visfeat::SmoothingParameters::kRadiusRange, opt.smooth) ||
       !integer("-threads", Visibility::kThreadsRange, opt.threads) ||

@@ -11,6 +11,7 @@
 #include <visfeat/core/graph/crease_angles.h>
 #include <visfeat/core/grid/resolution_search.h>
 #include <visfeat/core/segmentation/components.h>
+#include <visfeat/core/segmentation/flat_feature_points.h>
 #include <visfeat/core/visibility/visibility_map.h>
 #include <visfeat/surface_fill.h>
 
@@ -46,6 +47,7 @@ struct Options
   int narrow_persistence = kDefaultNarrowPersistence;
   double dimensionality = kDefaultDimensionality;
   double min_crease_angle = visfeat::CreaseAngleParameters::kDefaultMinCreaseAngle;
+  double flat_variation = visfeat::FlatPointParameters::kDefaultMaxSurfaceVariation;
   bool raw = false;
   bool regions = true;
   bool flat_cores = true;

@@ -264,6 +264,15 @@ public:
   }
   inline double getMinCreaseAngle() const { return crease_angles_.min_crease_angle; }
 
+  /** \brief Edge and vertex points on flat ground go to the nearest face: a point whose
+   * points within point_feature_distance + 0.5 cells have a surface variation (PCL's
+   * curvature) of at most this is not on a crease (flatFeaturePoints(); the graph is
+   * unchanged, its point counts follow). Default
+   * FlatPointParameters::kDefaultMaxSurfaceVariation (1e-3: noise of a tenth of a cell
+   * reads above it), 0 = off; range FlatPointParameters::kMaxSurfaceVariationRange. */
+  inline void setFlatPointVariation(double v) { flat_point_variation_ = v; }
+  inline double getFlatPointVariation() const { return flat_point_variation_; }
+
   /** \brief Smoothing radius in cells: before the band is built, every point is
    * projected onto the least-squares plane of its neighbours within this radius
    * (smoothPoints()); creases are rounded within it. Default 0 = off, or
@@ -528,6 +537,11 @@ private:
    * (cornerMeets) and the face cells around it. */
   void
   placeCornersAtMeets(Results& results, const Run& run, PointCloudOut& output) const;
+  /** Last: feature points on flat ground go to a face (flatFeaturePoints). */
+  void moveFlatFeaturePoints(Results& results,
+                             const Run& run,
+                             const PointCloudIn& surface,
+                             PointCloudOut& output) const;
   /** Points after addRegions() (addContactCreases()); then `into` joins the added
    * regions (merge, graph, crease angles angle_of through both renumberings). */
   void relabelAddedPoints(const Results& results,
@@ -553,6 +567,7 @@ private:
   VoxelBand::Options band_options_;
   SegmentationParameters segmentation_parameters_;
   CreaseAngleParameters crease_angles_;
+  double flat_point_variation_ = FlatPointParameters::kDefaultMaxSurfaceVariation;
   std::uint64_t memory_limit_ = 0;
   int max_search_resolution_ = kMaxSearchResolution;
   ProgressCallback progress_;

@@ -7,6 +7,7 @@
 #include <visfeat/core/grid/grid_spec.h>
 #include <visfeat/core/grid/resolution.h>
 #include <visfeat/core/segmentation/feature_segmentation.h>
+#include <visfeat/core/segmentation/flat_feature_points.h>
 #include <visfeat/core/visibility/free_space.h>
 #include <visfeat/core/visibility/visibility_map.h>
 #include <visfeat/phase_times.h>
@@ -29,6 +30,7 @@ struct EstimationRun
   SegmentationParameters segmentation;
   TopologyGraphParameters graph;
   CreaseAngleParameters crease_angles;
+  FlatPointParameters flat_points; // radius: point_feature_distance + kMargin, at use
   GridSpec grid;
   ResolutionEstimate resolution;
   SurfaceFill fill = SurfaceFill::kPoints;

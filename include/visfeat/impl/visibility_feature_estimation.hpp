@@ -150,6 +150,9 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::prepare() const
   run.segmentation.validate(run.visibility.max_radius);
   run.crease_angles = crease_angles_;
   run.crease_angles.validate();
+  run.flat_points.max_surface_variation = flat_point_variation_;
+  run.flat_points.threads = threads_;
+  run.flat_points.validate();
   run.smoothing.radius = getSmoothingRadius();
   run.smoothing.threads = threads_;
   run.smoothing.validate();
@@ -490,6 +493,7 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::computeResults(
   joinSplitCorners(results, run, output);
   placeCornersAtMeets(results, run, output);
   bridgeEdgesToCorners(results, run, output);
+  moveFlatFeaturePoints(results, run, *surface, output);
   run.times.graph_ms = detail::millisecondsSince(start);
   run.warnings_before_checks = run.warnings;
   checkResults(results, run);

@@ -1,9 +1,11 @@
 // VisibilityFeatureEstimation (not for inclusion on its own): the per-point output,
 // each point labelled from the band cell it falls in (PointLabeling), and the corner
-// points that vertex regions no point falls in claim.
+// points that vertex regions no point falls in claim; last, the feature points on flat
+// ground go to a face.
 #pragma once
 
 #include <visfeat/core/common/threads.h>
+#include <visfeat/core/segmentation/flat_feature_points.h>
 #include <visfeat/core/segmentation/point_labeling.h>
 #include <visfeat/impl/visibility_feature_estimation.hpp>
 
@@ -152,6 +154,59 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::claimCornerPoints(
   if (claimed)
     detail::refreshPointGeometry(results.segmentation.regions().size(), output,
                                  results.graph);
+}
+
+template <typename PointInT, typename PointOutT>
+void
+VisibilityFeatureEstimation<PointInT, PointOutT>::moveFlatFeaturePoints(
+  Results& results,
+  const Run& run,
+  const PointCloudIn& surface,
+  PointCloudOut& output) const
+{
+  if (run.segmentation.raw || !(run.flat_points.max_surface_variation > 0.0))
+    return;
+  FlatPointParameters parameters = run.flat_points;
+  parameters.radius =
+    run.segmentation.point_feature_distance + FlatPointParameters::kMargin;
+  // the labelled points as the band saw them (smoothed in noise mode), as in
+  // labelPoints(); their balls hold the points the band was built from
+  const GridSpec& grid = results.band.grid();
+  const auto cellUnits = [&](const PointInT& p) -> Eigen::Vector3f {
+    return grid.toCellUnits(Eigen::Vector3d(p.x, p.y, p.z)).template cast<float>();
+  };
+  std::vector<Eigen::Vector3f> ground(surface.size());
+  std::vector<CellId> ground_cells(surface.size(), kNoCell);
+  const bool recorded = results.band.pointCell().size() == surface.size();
+  for (std::size_t j = 0; j < surface.size(); ++j) {
+    ground[j] = cellUnits(surface[j]);
+    if (!pcl::isXYZFinite(surface[j]))
+      continue;
+    ground_cells[j] = recorded ? results.band.pointCell()[j]
+                               : results.band.find(grid.cellOf(Eigen::Vector3d(
+                                   surface[j].x, surface[j].y, surface[j].z)));
+  }
+  std::vector<Eigen::Vector3f> points(output.size());
+  std::vector<std::uint32_t> labels(output.size());
+  std::vector<FeatureClass> classes(output.size());
+  for (std::size_t i = 0; i < output.size(); ++i) {
+    const auto index = static_cast<std::size_t>((*indices_)[i]);
+    points[i] = cellUnits(fake_surface_ ? surface[index] : (*input_)[index]);
+    labels[i] = output[i].label;
+    classes[i] = static_cast<FeatureClass>(output[i].feature_class);
+  }
+  const std::vector<FlatPointMove> moves =
+    flatFeaturePoints(results.band, ground, ground_cells, points, labels, classes,
+                      results.segmentation.cellLabels(),
+                      results.segmentation.regionClasses(), parameters);
+  if (moves.empty())
+    return;
+  for (const FlatPointMove& m : moves) {
+    output[m.point].label = m.label;
+    output[m.point].feature_class = static_cast<std::uint8_t>(FeatureClass::kFace);
+  }
+  detail::refreshPointGeometry(results.segmentation.regions().size(), output,
+                               results.graph);
 }
 
 } // namespace visfeat

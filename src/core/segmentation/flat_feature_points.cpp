@@ -1,0 +1,246 @@
+#include <visfeat/core/common/error.h>
+#include <visfeat/core/common/threads.h>
+#include <visfeat/core/segmentation/flat_feature_points.h>
+
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace visfeat {
+
+void
+FlatPointParameters::validate() const
+{
+  checkRange("flat_point_variation", max_surface_variation, kMaxSurfaceVariationRange,
+             "surface variation");
+  checkRange("flat_point_min_points", min_points, kMinPointsRange, "points");
+  checkRange("flat_point_radius", radius, kRadiusRange, "cells");
+}
+
+namespace {
+
+/** Points of each band cell, in increasing point order: the points of cell c are
+ * order[begin[c] .. begin[c + 1]). */
+struct CellPoints
+{
+  std::vector<std::size_t> begin;
+  std::vector<std::size_t> order;
+
+  CellPoints(std::size_t cells, const std::vector<CellId>& point_cells)
+      : begin(cells + 1, 0)
+  {
+    for (const CellId c : point_cells)
+      if (c != kNoCell)
+        ++begin[static_cast<std::size_t>(c) + 1];
+    for (std::size_t c = 0; c < cells; ++c)
+      begin[c + 1] += begin[c];
+    order.resize(begin[cells]);
+    std::vector<std::size_t> next(begin.begin(), begin.end() - 1);
+    for (std::size_t i = 0; i < point_cells.size(); ++i)
+      if (point_cells[i] != kNoCell)
+        order[next[static_cast<std::size_t>(point_cells[i])]++] = i;
+  }
+};
+
+/** Running sums of the offsets d = p - q of the points in a ball around q. */
+struct Scatter
+{
+  std::size_t count = 0;
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  Eigen::Matrix3d outer = Eigen::Matrix3d::Zero();
+
+  void add(const Eigen::Vector3d& d)
+  {
+    ++count;
+    sum += d;
+    outer.noalias() += d * d.transpose();
+  }
+
+  /** lambda_0 / trace of the covariance; NaN when fewer than 3 points or no spread. */
+  double variation() const
+  {
+    if (count < 3)
+      return std::numeric_limits<double>::quiet_NaN();
+    const double n = static_cast<double>(count);
+    const Eigen::Vector3d mean = sum / n;
+    const Eigen::Matrix3d covariance = outer / n - mean * mean.transpose();
+    const double trace = covariance.trace();
+    if (!(trace > 0.0))
+      return std::numeric_limits<double>::quiet_NaN();
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
+    solver.computeDirect(covariance, Eigen::EigenvaluesOnly);
+    return std::max(0.0, solver.eigenvalues()(0)) / trace;
+  }
+};
+
+bool
+isFeature(FeatureClass c)
+{
+  return c == FeatureClass::kEdge || c == FeatureClass::kVertex;
+}
+
+} // namespace
+
+double
+surfaceVariation(const std::vector<Eigen::Vector3d>& points)
+{
+  Scatter scatter;
+  for (const Eigen::Vector3d& p : points)
+    scatter.add(p - (points.empty() ? p : points.front()));
+  return scatter.variation();
+}
+
+namespace {
+
+void
+checkInputs(const VoxelBand& band,
+            const std::vector<Eigen::Vector3f>& surface,
+            const std::vector<CellId>& surface_cells,
+            const std::vector<Eigen::Vector3f>& points,
+            const std::vector<std::uint32_t>& labels,
+            const std::vector<FeatureClass>& classes,
+            const std::vector<std::uint32_t>& cell_labels,
+            const std::vector<FeatureClass>& region_classes)
+{
+  const auto size = [](std::size_t n) { return std::to_string(n); };
+  if (surface_cells.size() != surface.size())
+    throw Error("flatFeaturePoints: " + size(surface.size()) + " surface points but " +
+                size(surface_cells.size()) + " cells");
+  if (labels.size() != points.size() || classes.size() != points.size())
+    throw Error("flatFeaturePoints: " + size(points.size()) + " points but " +
+                size(labels.size()) + " labels and " + size(classes.size()) +
+                " classes");
+  if (cell_labels.size() != band.size())
+    throw Error("flatFeaturePoints: " + size(cell_labels.size()) +
+                " cell labels for a band of " + size(band.size()) + " cells");
+  for (const CellId c : surface_cells)
+    if (c != kNoCell && (c < 0 || static_cast<std::size_t>(c) >= band.size()))
+      throw Error("flatFeaturePoints: cell " + std::to_string(c) +
+                  " is not a cell of the band (" + size(band.size()) + " cells)");
+  for (const std::uint32_t l : cell_labels)
+    if (l > region_classes.size())
+      throw Error("flatFeaturePoints: cell label " + std::to_string(l) + " but " +
+                  size(region_classes.size()) + " regions");
+}
+
+/** Per labelled point, the face label it moves to (0: stays), and in `variation` the
+ * surface variation of its ball where it moves. */
+std::vector<std::uint32_t>
+flatTargets(const VoxelBand& band,
+            const std::vector<Eigen::Vector3f>& surface,
+            const CellPoints& by_cell,
+            const std::vector<Eigen::Vector3f>& points,
+            const std::vector<FeatureClass>& classes,
+            const std::vector<std::uint32_t>& cell_labels,
+            const std::vector<FeatureClass>& region_classes,
+            const FlatPointParameters& parameters,
+            std::vector<double>& variation)
+{
+  variation.assign(points.size(), 0.0);
+  const double r = parameters.radius;
+  const double r2 = r * r;
+  std::vector<std::uint32_t> target(points.size(), 0);
+  constexpr std::size_t kPointsPerChunk = 2048;
+  parallelFor(
+    points.size(), parameters.threads, kPointsPerChunk,
+    [&](std::size_t first, std::size_t last) {
+      for (std::size_t i = first; i < last; ++i) {
+        if (!isFeature(classes[i]) || !points[i].allFinite())
+          continue;
+        const Eigen::Vector3d q = points[i].cast<double>();
+        const Eigen::Vector3d lo = (q.array() - r).floor();
+        const Eigen::Vector3d hi = (q.array() + r).floor();
+        Scatter scatter;
+        double nearest_face = std::numeric_limits<double>::infinity();
+        std::uint32_t face = 0;
+        for (int z = static_cast<int>(lo.z()); z <= static_cast<int>(hi.z()); ++z)
+          for (int y = static_cast<int>(lo.y()); y <= static_cast<int>(hi.y()); ++y)
+            for (int x = static_cast<int>(lo.x()); x <= static_cast<int>(hi.x()); ++x) {
+              const CellId c = band.find(CellCoord(x, y, z));
+              if (c == kNoCell)
+                continue;
+              const auto cell = static_cast<std::size_t>(c);
+              const std::uint32_t label = cell_labels[cell];
+              if (label != 0 && region_classes[label - 1] == FeatureClass::kFace) {
+                const double d2 =
+                  (Eigen::Vector3d(x + 0.5, y + 0.5, z + 0.5) - q).squaredNorm();
+                if (d2 < nearest_face || (d2 == nearest_face && label < face)) {
+                  nearest_face = d2;
+                  face = label;
+                }
+              }
+              for (std::size_t k = by_cell.begin[cell]; k < by_cell.begin[cell + 1];
+                   ++k) {
+                const Eigen::Vector3d d = surface[by_cell.order[k]].cast<double>() - q;
+                if (d.squaredNorm() <= r2)
+                  scatter.add(d);
+              }
+            }
+        if (face == 0 ||
+            scatter.count < static_cast<std::size_t>(parameters.min_points))
+          continue;
+        const double v = scatter.variation();
+        if (v <= parameters.max_surface_variation) {
+          target[i] = face;
+          variation[i] = v;
+        }
+      }
+    });
+  return target;
+}
+
+} // namespace
+
+std::vector<FlatPointMove>
+flatFeaturePoints(const VoxelBand& band,
+                  const std::vector<Eigen::Vector3f>& surface,
+                  const std::vector<CellId>& surface_cells,
+                  const std::vector<Eigen::Vector3f>& points,
+                  const std::vector<std::uint32_t>& labels,
+                  const std::vector<FeatureClass>& classes,
+                  const std::vector<std::uint32_t>& cell_labels,
+                  const std::vector<FeatureClass>& region_classes,
+                  const FlatPointParameters& parameters)
+{
+  parameters.validate();
+  checkInputs(band, surface, surface_cells, points, labels, classes, cell_labels,
+              region_classes);
+  if (parameters.max_surface_variation <= 0.0)
+    return {};
+  std::vector<double> variation;
+  std::vector<std::uint32_t> target =
+    flatTargets(band, surface, CellPoints(band.size(), surface_cells), points, classes,
+                cell_labels, region_classes, parameters, variation);
+  // a region all of whose points would move keeps its least flat one (the first on
+  // ties)
+  std::uint32_t max_label = 0;
+  for (const std::uint32_t l : labels)
+    max_label = std::max(max_label, l);
+  std::vector<std::size_t> total(static_cast<std::size_t>(max_label) + 1, 0);
+  std::vector<std::size_t> moving(total.size(), 0);
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    ++total[labels[i]];
+    if (target[i] != 0)
+      ++moving[labels[i]];
+  }
+  const std::size_t none = points.size();
+  std::vector<std::size_t> keep(total.size(), none);
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const std::uint32_t l = labels[i];
+    if (l != 0 && target[i] != 0 && moving[l] == total[l] &&
+        (keep[l] == none || variation[i] > variation[keep[l]]))
+      keep[l] = i;
+  }
+  for (const std::size_t i : keep)
+    if (i != none)
+      target[i] = 0;
+  std::vector<FlatPointMove> moves;
+  for (std::size_t i = 0; i < points.size(); ++i)
+    if (target[i] != 0)
+      moves.push_back({i, target[i]});
+  return moves;
+}
+
+} // namespace visfeat
