@@ -44,18 +44,26 @@ struct CellPoints
   }
 };
 
-/** Running sums of the offsets d = p - q of the points in a ball around q. */
+/** Running sums of the offsets d = p - q of the points in a ball around q (the six
+ * distinct second moments, not a 3x3 product per point). */
 struct Scatter
 {
   std::size_t count = 0;
-  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-  Eigen::Matrix3d outer = Eigen::Matrix3d::Zero();
+  double sx = 0, sy = 0, sz = 0;
+  double xx = 0, xy = 0, xz = 0, yy = 0, yz = 0, zz = 0;
 
   void add(const Eigen::Vector3d& d)
   {
     ++count;
-    sum += d;
-    outer.noalias() += d * d.transpose();
+    sx += d.x();
+    sy += d.y();
+    sz += d.z();
+    xx += d.x() * d.x();
+    xy += d.x() * d.y();
+    xz += d.x() * d.z();
+    yy += d.y() * d.y();
+    yz += d.y() * d.z();
+    zz += d.z() * d.z();
   }
 
   /** lambda_0 / trace of the covariance; NaN when fewer than 3 points or no spread. */
@@ -64,8 +72,10 @@ struct Scatter
     if (count < 3)
       return std::numeric_limits<double>::quiet_NaN();
     const double n = static_cast<double>(count);
-    const Eigen::Vector3d mean = sum / n;
-    const Eigen::Matrix3d covariance = outer / n - mean * mean.transpose();
+    const Eigen::Vector3d mean(sx / n, sy / n, sz / n);
+    Eigen::Matrix3d covariance;
+    covariance << xx, xy, xz, xy, yy, yz, xz, yz, zz;
+    covariance = covariance / n - mean * mean.transpose();
     const double trace = covariance.trace();
     if (!(trace > 0.0))
       return std::numeric_limits<double>::quiet_NaN();
@@ -125,8 +135,72 @@ checkInputs(const VoxelBand& band,
                   size(region_classes.size()) + " regions");
 }
 
+/** The feature points to judge (finite), grouped by the cell they fall in: group g is
+ * queries[group_begin[g] .. group_begin[g + 1]), in increasing point order within
+ * each group and in grid-key order of the cells. */
+struct QueryGroups
+{
+  std::vector<std::size_t> queries;
+  std::vector<std::size_t> group_begin;
+  std::vector<CellCoord> group_cell;
+
+  QueryGroups(const VoxelBand& band,
+              const std::vector<Eigen::Vector3f>& points,
+              const std::vector<FeatureClass>& classes)
+  {
+    std::vector<std::pair<std::uint64_t, std::size_t>> keyed;
+    for (std::size_t i = 0; i < points.size(); ++i)
+      if (isFeature(classes[i]) && points[i].allFinite()) {
+        const CellCoord c = points[i].array().floor().cast<int>().matrix();
+        if (band.grid().contains(c))
+          keyed.emplace_back(band.grid().linearKey(c), i);
+      }
+    std::sort(keyed.begin(), keyed.end());
+    for (std::size_t k = 0; k < keyed.size(); ++k) {
+      if (k == 0 || keyed[k].first != keyed[k - 1].first) {
+        group_begin.push_back(k);
+        group_cell.push_back(band.grid().cellOfKey(keyed[k].first));
+      }
+      queries.push_back(keyed[k].second);
+    }
+    group_begin.push_back(keyed.size());
+  }
+
+  std::size_t size() const { return group_cell.size(); }
+};
+
+/** The band cells of the block of cells within `reach` of c (Chebyshev). */
+void
+blockCells(const VoxelBand& band,
+           const CellCoord& c,
+           int reach,
+           std::vector<std::pair<CellId, CellCoord>>& out)
+{
+  out.clear();
+  for (int dz = -reach; dz <= reach; ++dz)
+    for (int dy = -reach; dy <= reach; ++dy)
+      for (int dx = -reach; dx <= reach; ++dx) {
+        const CellCoord at = c + CellCoord(dx, dy, dz);
+        const CellId id = band.find(at);
+        if (id != kNoCell)
+          out.emplace_back(id, at);
+      }
+}
+
+/** Squared distance from q to the box of cell c (0 inside). */
+double
+boxDistance2(const Eigen::Vector3d& q, const CellCoord& c)
+{
+  const Eigen::Array3d lo = c.cast<double>().array();
+  const Eigen::Array3d gap =
+    (lo - q.array()).max(q.array() - (lo + 1.0)).max(Eigen::Array3d::Zero());
+  return gap.matrix().squaredNorm();
+}
+
 /** Per labelled point, the face label it moves to (0: stays), and in `variation` the
- * surface variation of its ball where it moves. */
+ * surface variation of its ball where it moves. The points of one cell share the band
+ * cells of the block around it (one lookup per cell, not per point); each point reads
+ * the cells its ball reaches. */
 std::vector<std::uint32_t>
 flatTargets(const VoxelBand& band,
             const std::vector<Eigen::Vector3f>& surface,
@@ -141,50 +215,51 @@ flatTargets(const VoxelBand& band,
   variation.assign(points.size(), 0.0);
   const double r = parameters.radius;
   const double r2 = r * r;
+  const int reach = static_cast<int>(std::ceil(r));
   std::vector<std::uint32_t> target(points.size(), 0);
-  constexpr std::size_t kPointsPerChunk = 2048;
+  const QueryGroups groups(band, points, classes);
+  constexpr std::size_t kCellsPerChunk = 64;
   parallelFor(
-    points.size(), parameters.threads, kPointsPerChunk,
+    groups.size(), parameters.threads, kCellsPerChunk,
     [&](std::size_t first, std::size_t last) {
-      for (std::size_t i = first; i < last; ++i) {
-        if (!isFeature(classes[i]) || !points[i].allFinite())
-          continue;
-        const Eigen::Vector3d q = points[i].cast<double>();
-        const Eigen::Vector3d lo = (q.array() - r).floor();
-        const Eigen::Vector3d hi = (q.array() + r).floor();
-        Scatter scatter;
-        double nearest_face = std::numeric_limits<double>::infinity();
-        std::uint32_t face = 0;
-        for (int z = static_cast<int>(lo.z()); z <= static_cast<int>(hi.z()); ++z)
-          for (int y = static_cast<int>(lo.y()); y <= static_cast<int>(hi.y()); ++y)
-            for (int x = static_cast<int>(lo.x()); x <= static_cast<int>(hi.x()); ++x) {
-              const CellId c = band.find(CellCoord(x, y, z));
-              if (c == kNoCell)
-                continue;
-              const auto cell = static_cast<std::size_t>(c);
-              const std::uint32_t label = cell_labels[cell];
-              if (label != 0 && region_classes[label - 1] == FeatureClass::kFace) {
-                const double d2 =
-                  (Eigen::Vector3d(x + 0.5, y + 0.5, z + 0.5) - q).squaredNorm();
-                if (d2 < nearest_face || (d2 == nearest_face && label < face)) {
-                  nearest_face = d2;
-                  face = label;
-                }
-              }
-              for (std::size_t k = by_cell.begin[cell]; k < by_cell.begin[cell + 1];
-                   ++k) {
-                const Eigen::Vector3d d = surface[by_cell.order[k]].cast<double>() - q;
-                if (d.squaredNorm() <= r2)
-                  scatter.add(d);
+      std::vector<std::pair<CellId, CellCoord>> block;
+      for (std::size_t g = first; g < last; ++g) {
+        blockCells(band, groups.group_cell[g], reach, block);
+        for (std::size_t k = groups.group_begin[g]; k < groups.group_begin[g + 1];
+             ++k) {
+          const std::size_t i = groups.queries[k];
+          const Eigen::Vector3d q = points[i].cast<double>();
+          Scatter scatter;
+          double nearest_face = std::numeric_limits<double>::infinity();
+          std::uint32_t face = 0;
+          for (const auto& [id, at] : block) {
+            if (boxDistance2(q, at) > r2)
+              continue; // the ball does not reach the cell
+            const auto cell = static_cast<std::size_t>(id);
+            const std::uint32_t label = cell_labels[cell];
+            if (label != 0 && region_classes[label - 1] == FeatureClass::kFace) {
+              const double d2 =
+                (at.cast<double>().array() + 0.5 - q.array()).square().sum();
+              if (d2 < nearest_face || (d2 == nearest_face && label < face)) {
+                nearest_face = d2;
+                face = label;
               }
             }
-        if (face == 0 ||
-            scatter.count < static_cast<std::size_t>(parameters.min_points))
-          continue;
-        const double v = scatter.variation();
-        if (v <= parameters.max_surface_variation) {
-          target[i] = face;
-          variation[i] = v;
+            for (std::size_t j = by_cell.begin[cell]; j < by_cell.begin[cell + 1];
+                 ++j) {
+              const Eigen::Vector3d d = surface[by_cell.order[j]].cast<double>() - q;
+              if (d.squaredNorm() <= r2)
+                scatter.add(d);
+            }
+          }
+          if (face == 0 ||
+              scatter.count < static_cast<std::size_t>(parameters.min_points))
+            continue;
+          const double v = scatter.variation();
+          if (v <= parameters.max_surface_variation) {
+            target[i] = face;
+            variation[i] = v;
+          }
         }
       }
     });

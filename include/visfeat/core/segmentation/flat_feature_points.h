@@ -80,12 +80,13 @@ struct FlatPointMove
 
 /** \brief The edge and vertex points on flat ground (see FlatPointParameters), each
  * with the face it goes to: the face region of the band cell nearest to it (cell
- * centres) among the cells its ball spans (ties: the lower label); a point with no
+ * centres) among the cells its ball reaches (ties: the lower label); a point with no
  * face cell there stays.
  *
  * The ball holds the points of the surface the band was built from (the search
- * surface, as PCL's features), gathered through the band's cells: a ball spans at
- * most (2 ceil(radius) + 1)^3 cells. A region never loses all its labelled points:
+ * surface, as PCL's features), gathered through the band's cells: the points of one
+ * cell share the band cells within ceil(radius) of it, and each reads those its ball
+ * reaches. A region never loses all its labelled points:
  * where every one would move, its least flat one stays (the first on ties), so the
  * graph keeps a point for each of its nodes, as the corner claim does for vertices
  * no point fell in. The result does not depend on the thread count.
