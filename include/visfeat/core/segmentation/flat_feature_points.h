@@ -21,8 +21,8 @@ namespace visfeat {
  * plane is on a face: its skeleton strayed from the crease (a skeleton drawn across a
  * flat face, a corner placed in the middle of one). Measured on the public meshes
  * sampled by scripts/eval_meshes.py (6 points a cell squared, no noise; 2026-12-07):
- * per-point precision of the fandisk at 1024 0.918 -> 0.966, recall 0.947 both, F1
- * 0.932 -> 0.957; ABC 00000050 at 1024 F1 0.725 -> 0.779. Noise of 0.05 cell or more
+ * per-point precision of the fandisk at 1024 0.918 -> 0.964, recall 0.947 both, F1
+ * 0.932 -> 0.956; ABC 00000050 at 1024 F1 0.725 -> 0.776. Noise of 0.05 cell or more
  * reads above the default bound, unless smoothed away first (the estimator reads the
  * points as the band saw them: in noise mode, smoothed).
  */
