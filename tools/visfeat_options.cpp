@@ -121,9 +121,11 @@ printHelp(const char* program)
              visfeat::CreaseAngleParameters::kMinCreaseAngleRange.min,
              visfeat::CreaseAngleParameters::kMinCreaseAngleRange.max);
   print_info("    -flat_variation V = an edge or vertex point whose points within "
-             "point_feature_distance + %g cells have a surface variation of at most V "
-             "lies on flat ground: it goes to the nearest face (default: ",
-             visfeat::FlatPointParameters::kMargin);
+             "point_feature_distance + %g cell (at least %d of them) have a surface "
+             "variation (PCL's curvature) of at most V lies on flat ground: it goes to "
+             "the nearest face; the graph is unchanged (default: ",
+             visfeat::FlatPointParameters::kMargin,
+             visfeat::FlatPointParameters::kDefaultMinPoints);
   print_value("%g", visfeat::FlatPointParameters::kDefaultMaxSurfaceVariation);
   print_info("; %g-%g, 0 = off)\n",
              visfeat::FlatPointParameters::kMaxSurfaceVariationRange.min,
