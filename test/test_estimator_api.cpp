@@ -469,12 +469,14 @@ TEST(EstimatorShape, CoplanarCloudsAreProcessedWithANote)
   EXPECT_EQ(est.getNotes()[0],
             "all points lie in a plane: expect one face and no edges or vertices (the "
             "outline of a flat patch is a boundary, not a crease)");
-  // A solid has no note.
+  // A solid has no such note (it may have others: this cube is too sparse at 40 for
+  // the flat-ground step, which says so).
   est.setInputCloud(cubeCloud());
   est.setResolution(40);
   est.compute(out);
   ASSERT_EQ(est.getErrorMessage(), "");
-  EXPECT_TRUE(est.getNotes().empty());
+  for (const std::string& note : est.getNotes())
+    EXPECT_EQ(note.find("lie in a plane"), std::string::npos) << note;
 }
 
 } // namespace

@@ -17,6 +17,7 @@
 #include <pcl/point_cloud.h>
 #include <pcl/point_types.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <map>
 #include <memory>
@@ -127,6 +128,15 @@ TEST(FlatPointsOnModels, PrecisionRisesRecallStaysAndTheGraphStays)
     EXPECT_GE(with.precision(), without.precision());
     EXPECT_GE(with.recall(), without.recall() - 1e-3);
     expectNodePointsFollowTheCloud(on, labelled);
+    // a note gives the count (none where nothing moved)
+    const std::string said = std::to_string(moved) + " of ";
+    const auto& notes = on.getNotes();
+    const bool noted =
+      std::any_of(notes.begin(), notes.end(), [&](const std::string& n) {
+        return n.find("feature points on flat ground: " + said) == 0 &&
+               n.find("went to their faces") != std::string::npos;
+      });
+    EXPECT_EQ(noted, moved > 0);
   }
 }
 
@@ -190,6 +200,33 @@ TEST(FlatPointsOnModels, ALooseBoundMovesCreasePointsButNoNodeLosesItsPoints)
   EXPECT_LT(after, before / 2) << before << " feature points before";
   EXPECT_EQ(loose.getTopologyGraph().size(), plain_est.getTopologyGraph().size());
   expectNodePointsFollowTheCloud(loose, moved);
+}
+
+TEST(FlatPointsOnModels, ACloudTooSparseForTheStepSaysSo)
+{
+  // 60,000 points of the icosahedron at 256: about 0.5 points a cell squared, so no
+  // ball holds 24 points; the labels stay and a note says why
+  const syn::CadModel model =
+    syn::rotated(syn::cadModelByName("icosahedron"), syn::randomRotation(1));
+  syn::SamplingOptions options;
+  options.count = 60000;
+  options.seed = 1;
+  const ModelCloud m{model, visfeat_test::sampleCadCloud(model, options).cloud};
+  Estimator on, off;
+  const Output labelled = run(on, m, Estimator().getFlatPointVariation());
+  const Output plain = run(off, m, 0.0);
+  ASSERT_EQ(labelled.size(), plain.size());
+  for (std::size_t i = 0; i < plain.size(); ++i)
+    ASSERT_EQ(labelled[i].label, plain[i].label) << "point " << i;
+  const auto& notes = on.getNotes();
+  EXPECT_TRUE(std::any_of(notes.begin(), notes.end(),
+                          [](const std::string& n) {
+                            return n.find("too few to tell flat ground") !=
+                                   std::string::npos;
+                          }))
+    << "no note on the sparse cloud";
+  for (const std::string& n : off.getNotes())
+    EXPECT_EQ(n.find("flat ground"), std::string::npos) << n;
 }
 
 TEST(FlatPointsOnModels, OutOfRangeIsRefusedByName)

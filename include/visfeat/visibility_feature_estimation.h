@@ -266,11 +266,12 @@ public:
 
   /** \brief Edge and vertex points on flat ground go to the nearest face: a point whose
    * points within point_feature_distance + 1 cell (at least 24) have a surface
-   * variation (PCL's curvature) of at most this is not on a crease (flatFeaturePoints();
-   * the graph is unchanged, its point counts follow). Default
+   * variation (PCL's curvature) of at most this is not on a crease
+   * (flatFeaturePoints(); the graph is unchanged, its point counts follow). Default
    * FlatPointParameters::kDefaultMaxSurfaceVariation (1e-3: unsmoothed noise of 0.05
-   * cell reads above it), 0 = off; range FlatPointParameters::kMaxSurfaceVariationRange.
-   * The last step of compute(); raw mode skips it. */
+   * cell reads above it), 0 = off; range
+   * FlatPointParameters::kMaxSurfaceVariationRange. The last step of compute(); raw
+   * mode skips it. */
   inline void setFlatPointVariation(double v) { flat_point_variation_ = v; }
   inline double getFlatPointVariation() const { return flat_point_variation_; }
 
@@ -538,9 +539,10 @@ private:
    * (cornerMeets) and the face cells around it. */
   void
   placeCornersAtMeets(Results& results, const Run& run, PointCloudOut& output) const;
-  /** Last: feature points on flat ground go to a face (flatFeaturePoints). */
+  /** Last: feature points on flat ground go to a face (flatFeaturePoints); a note
+   * says how many, or that the cloud is too sparse for the step. */
   void moveFlatFeaturePoints(Results& results,
-                             const Run& run,
+                             Run& run,
                              const PointCloudIn& surface,
                              PointCloudOut& output) const;
   /** Points after addRegions() (addContactCreases()); then `into` joins the added

@@ -13,7 +13,9 @@
 
 #include <algorithm>
 #include <atomic>
+#include <iomanip>
 #include <limits>
+#include <sstream>
 
 namespace visfeat {
 template <typename PointInT, typename PointOutT>
@@ -159,10 +161,7 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::claimCornerPoints(
 template <typename PointInT, typename PointOutT>
 void
 VisibilityFeatureEstimation<PointInT, PointOutT>::moveFlatFeaturePoints(
-  Results& results,
-  const Run& run,
-  const PointCloudIn& surface,
-  PointCloudOut& output) const
+  Results& results, Run& run, const PointCloudIn& surface, PointCloudOut& output) const
 {
   if (run.segmentation.raw || !(run.flat_points.max_surface_variation > 0.0))
     return;
@@ -195,10 +194,29 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::moveFlatFeaturePoints(
     labels[i] = output[i].label;
     classes[i] = static_cast<FeatureClass>(output[i].feature_class);
   }
+  FlatPointStats stats;
   const std::vector<FlatPointMove> moves =
     flatFeaturePoints(results.band, ground, ground_cells, points, labels, classes,
                       results.segmentation.cellLabels(),
-                      results.segmentation.regionClasses(), parameters);
+                      results.segmentation.regionClasses(), parameters, &stats);
+  std::ostringstream note;
+  note << std::setprecision(3);
+  if (stats.judged * 2 < stats.feature_points) {
+    note
+      << "feature points on flat ground: " << stats.feature_points - stats.judged
+      << " of " << stats.feature_points << " edge and vertex points have fewer than "
+      << parameters.min_points << " points within " << parameters.radius
+      << " cells, too few to tell flat ground, and keep their labels (the step needs "
+         "about 2 points a cell squared: sample denser, or lower the resolution)";
+    run.notes.push_back(note.str());
+  } else if (!moves.empty()) {
+    note << "feature points on flat ground: " << moves.size() << " of "
+         << stats.feature_points
+         << " edge and vertex points lie on one plane with their neighbours "
+            "(flat_point_variation "
+         << parameters.max_surface_variation << ") and went to their faces";
+    run.notes.push_back(note.str());
+  }
   if (moves.empty())
     return;
   for (const FlatPointMove& m : moves) {

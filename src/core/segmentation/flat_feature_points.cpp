@@ -5,6 +5,7 @@
 #include <Eigen/Eigenvalues>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 
@@ -210,7 +211,8 @@ flatTargets(const VoxelBand& band,
             const std::vector<std::uint32_t>& cell_labels,
             const std::vector<FeatureClass>& region_classes,
             const FlatPointParameters& parameters,
-            std::vector<double>& variation)
+            std::vector<double>& variation,
+            FlatPointStats& stats)
 {
   variation.assign(points.size(), 0.0);
   const double r = parameters.radius;
@@ -218,11 +220,14 @@ flatTargets(const VoxelBand& band,
   const int reach = static_cast<int>(std::ceil(r));
   std::vector<std::uint32_t> target(points.size(), 0);
   const QueryGroups groups(band, points, classes);
+  stats.feature_points = groups.queries.size();
+  std::atomic<std::size_t> judged{0};
   constexpr std::size_t kCellsPerChunk = 64;
   parallelFor(
     groups.size(), parameters.threads, kCellsPerChunk,
     [&](std::size_t first, std::size_t last) {
       std::vector<std::pair<CellId, CellCoord>> block;
+      std::size_t chunk_judged = 0;
       for (std::size_t g = first; g < last; ++g) {
         blockCells(band, groups.group_cell[g], reach, block);
         for (std::size_t k = groups.group_begin[g]; k < groups.group_begin[g + 1];
@@ -255,6 +260,7 @@ flatTargets(const VoxelBand& band,
           if (face == 0 ||
               scatter.count < static_cast<std::size_t>(parameters.min_points))
             continue;
+          ++chunk_judged;
           const double v = scatter.variation();
           if (v <= parameters.max_surface_variation) {
             target[i] = face;
@@ -262,7 +268,9 @@ flatTargets(const VoxelBand& band,
           }
         }
       }
+      judged += chunk_judged;
     });
+  stats.judged = judged;
   return target;
 }
 
@@ -277,17 +285,21 @@ flatFeaturePoints(const VoxelBand& band,
                   const std::vector<FeatureClass>& classes,
                   const std::vector<std::uint32_t>& cell_labels,
                   const std::vector<FeatureClass>& region_classes,
-                  const FlatPointParameters& parameters)
+                  const FlatPointParameters& parameters,
+                  FlatPointStats* stats)
 {
   parameters.validate();
   checkInputs(band, surface, surface_cells, points, labels, classes, cell_labels,
               region_classes);
+  FlatPointStats counted;
+  if (stats)
+    *stats = counted;
   if (parameters.max_surface_variation <= 0.0)
     return {};
   std::vector<double> variation;
   std::vector<std::uint32_t> target =
     flatTargets(band, surface, CellPoints(band.size(), surface_cells), points, classes,
-                cell_labels, region_classes, parameters, variation);
+                cell_labels, region_classes, parameters, variation, counted);
   // a region all of whose points would move keeps its least flat one (the first on
   // ties)
   std::uint32_t max_label = 0;
@@ -315,6 +327,9 @@ flatFeaturePoints(const VoxelBand& band,
   for (std::size_t i = 0; i < points.size(); ++i)
     if (target[i] != 0)
       moves.push_back({i, target[i]});
+  counted.moved = moves.size();
+  if (stats)
+    *stats = counted;
   return moves;
 }
 

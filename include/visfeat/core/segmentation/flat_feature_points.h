@@ -72,6 +72,16 @@ struct FlatPointParameters
   void validate() const;
 };
 
+/** \brief What flatFeaturePoints() looked at: the edge and vertex points (finite),
+ * those it could judge (a ball of at least min_points points and a face cell within
+ * reach), and those it moved. */
+struct FlatPointStats
+{
+  std::size_t feature_points = 0;
+  std::size_t judged = 0;
+  std::size_t moved = 0;
+};
+
 /** \brief One point moved off a feature: it takes the label of face `label`. */
 struct FlatPointMove
 {
@@ -100,6 +110,8 @@ struct FlatPointMove
  * \param[in] cell_labels per band cell, its region label, 0 = none
  * \param[in] region_classes region_classes[label - 1] is the class of a region
  * \param[in] parameters see FlatPointParameters
+ * \param[out] stats if not null, what was looked at (zeros when max_surface_variation
+ *             is 0)
  * \return the moves, in increasing point order (empty when max_surface_variation is 0)
  * \throws visfeat::Error for parameters out of range, arrays of mismatched sizes, a
  *         cell id outside the band or a label outside region_classes. */
@@ -112,7 +124,8 @@ flatFeaturePoints(const VoxelBand& band,
                   const std::vector<FeatureClass>& classes,
                   const std::vector<std::uint32_t>& cell_labels,
                   const std::vector<FeatureClass>& region_classes,
-                  const FlatPointParameters& parameters);
+                  const FlatPointParameters& parameters,
+                  FlatPointStats* stats = nullptr);
 
 /** \brief Surface variation of the points (PCL's curvature: lambda_0 / (lambda_0 +
  * lambda_1 + lambda_2) of their covariance), in [0, 1/3]; NaN for fewer than 3 points
