@@ -30,8 +30,9 @@ struct FlatPointParameters
 {
   /** \brief Cells between point_feature_distance and the neighbourhood's radius: the
    * ball of a point within point_feature_distance of a crease reaches a cell past it
-   * (half a cell moved 2-13% of the points within 1 cell of 30-45-degree creases of
-   * random samples of 1.5-2 points a cell squared; a cell, 0-1.3%). */
+   * (of the points within 1 cell of 30-45-degree creases of random samples of 1.5-2
+   * points a cell squared, half a cell moved 7-16%, a cell 0.5-3%; at 6 points a cell
+   * squared, 1-2% and none). */
   static constexpr double kMargin = 1.0;
   /** \brief Radius of a point's neighbourhood, cells (> 0): the estimator sets
    * point_feature_distance + kMargin (2 by default, 2.25 in noise mode). */
@@ -60,7 +61,8 @@ struct FlatPointParameters
    * from 3, none. So sparse clouds, and clouds whose point_feature_distance is widened
    * to their spacing, keep their labels. */
   static constexpr int kDefaultMinPoints = 24;
-  /** \brief [0, 0.1]: above 0.1 points 1 cell from a 60-degree crease read flat. */
+  /** \brief [0, 0.1]: at 0.1 points 1 cell from a 90-degree crease (about 0.06)
+   * already read flat; values above the default trade real creases. */
   static constexpr ParameterRange<double> kMaxSurfaceVariationRange{0.0, 0.1};
   /** \brief [3, 1000] points. */
   static constexpr ParameterRange<int> kMinPointsRange{3, 1000};
