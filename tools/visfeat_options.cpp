@@ -50,46 +50,12 @@ switchOptions()
   return names;
 }
 
+namespace {
+
+/** The options of the components, the regions and the per-point labels. */
 void
-printHelp(const char* program)
+printSegmentationHelp()
 {
-  print_error(
-    "Syntax is: %s input.{pcd,ply,xyz,txt,obj,off,stl} output.pcd <options>\n",
-    program);
-  print_info(
-    "  Labels every point with the visibility radius of its voxel-band cell (Chica et "
-    "al.,\n"
-    "  \"Visibility-Based Feature Extraction From Discrete Models\"). The output "
-    "holds\n"
-    "  every field of the input plus visibility_radius (float), label (uint32) and\n"
-    "  feature_class (uint8: 0 none, 1 vertex, 2 edge, 3 face); an existing field of\n"
-    "  one of these names is overwritten. label is the region id (0 = none).\n"
-    "  Text clouds (.xyz, .txt: x y z per line) are read in double; a cloud far from\n"
-    "  the origin (survey coordinates) is recentred in double before the computation,\n"
-    "  which is in float; the output keeps the input's coordinates.\n");
-  print_info(
-    "  A mesh (.obj, .off, .stl, or .ply with faces) gives the band directly: its\n"
-    "  triangles are rasterised into the cells (-fill mesh, the default for meshes); "
-    "the output\n"
-    "  points are sampled on it uniformly by area, with a fixed seed (the same mesh\n"
-    "  always gives the same cloud; -mesh_points, -mesh_spacing).\n");
-  print_info("  where options are:\n");
-  print_info("    -resolution N     = cells along the longest side of the "
-             "bounding box (default: ");
-  print_value("automatic");
-  print_info(
-    ": %g point spacings per cell, the spacing estimated from k-NN "
-    "distances, at least %d where the band is filled between the points and "
-    "%d for a mesh; then doubled, up to %d (-max_search_resolution), while the "
-    "map shows narrow faces or a closed mesh's graph is not closed; %d-%d cells)\n",
-    visfeat::kSpacingsPerCell, visfeat::kTopologyResolution,
-    visfeat::kTopologyResolution, visfeat::kMaxSearchResolution,
-    visfeat::GridSpec::kResolutionRange.min, visfeat::GridSpec::kResolutionRange.max);
-  print_info("    -max_search_resolution N = the automatic resolution's search goes no "
-             "finer (default: ");
-  print_value("%d", visfeat::kMaxSearchResolution);
-  print_info(" cells; 2048 resolves narrower faces, at a cost in time and memory, "
-             "and may split a mesh's coarse facets; see README)\n");
   print_info(
     "    -min_radius R     = cells with radius >= R form components (default: ");
   print_value("%d", kDefaultMinRadius);
@@ -138,6 +104,51 @@ printHelp(const char* program)
              "across or not (default: a flat one is the middle of a face between two "
              "creases about 2 min_radius cells apart; see README, Thin face cores; "
              "-flat_cores, the default, is accepted)\n");
+}
+
+} // namespace
+
+void
+printHelp(const char* program)
+{
+  print_error(
+    "Syntax is: %s input.{pcd,ply,xyz,txt,obj,off,stl} output.pcd <options>\n",
+    program);
+  print_info(
+    "  Labels every point with the visibility radius of its voxel-band cell (Chica et "
+    "al.,\n"
+    "  \"Visibility-Based Feature Extraction From Discrete Models\"). The output "
+    "holds\n"
+    "  every field of the input plus visibility_radius (float), label (uint32) and\n"
+    "  feature_class (uint8: 0 none, 1 vertex, 2 edge, 3 face); an existing field of\n"
+    "  one of these names is overwritten. label is the region id (0 = none).\n"
+    "  Text clouds (.xyz, .txt: x y z per line) are read in double; a cloud far from\n"
+    "  the origin (survey coordinates) is recentred in double before the computation,\n"
+    "  which is in float; the output keeps the input's coordinates.\n");
+  print_info(
+    "  A mesh (.obj, .off, .stl, or .ply with faces) gives the band directly: its\n"
+    "  triangles are rasterised into the cells (-fill mesh, the default for meshes); "
+    "the output\n"
+    "  points are sampled on it uniformly by area, with a fixed seed (the same mesh\n"
+    "  always gives the same cloud; -mesh_points, -mesh_spacing).\n");
+  print_info("  where options are:\n");
+  print_info("    -resolution N     = cells along the longest side of the "
+             "bounding box (default: ");
+  print_value("automatic");
+  print_info(
+    ": %g point spacings per cell, the spacing estimated from k-NN "
+    "distances, at least %d where the band is filled between the points and "
+    "%d for a mesh; then doubled, up to %d (-max_search_resolution), while the "
+    "map shows narrow faces or a closed mesh's graph is not closed; %d-%d cells)\n",
+    visfeat::kSpacingsPerCell, visfeat::kTopologyResolution,
+    visfeat::kTopologyResolution, visfeat::kMaxSearchResolution,
+    visfeat::GridSpec::kResolutionRange.min, visfeat::GridSpec::kResolutionRange.max);
+  print_info("    -max_search_resolution N = the automatic resolution's search goes no "
+             "finer (default: ");
+  print_value("%d", visfeat::kMaxSearchResolution);
+  print_info(" cells; 2048 resolves narrower faces, at a cost in time and memory, "
+             "and may split a mesh's coarse facets; see README)\n");
+  printSegmentationHelp();
   print_info("    -opacity D        = blocked length tolerated between two "
              "cells (default: ");
   print_value("%g", kDefaultOpacity);

@@ -264,14 +264,10 @@ public:
   }
   inline double getMinCreaseAngle() const { return crease_angles_.min_crease_angle; }
 
-  /** \brief Edge and vertex points on flat ground go to the nearest face: a point whose
-   * points within point_feature_distance + 1 cell (at least 24) have a surface
-   * variation (PCL's curvature) of at most this is not on a crease
-   * (flatFeaturePoints(); the graph is unchanged, its point counts follow). Default
-   * FlatPointParameters::kDefaultMaxSurfaceVariation (1e-3: unsmoothed noise of 0.05
-   * cell reads above it), 0 = off; range
-   * FlatPointParameters::kMaxSurfaceVariationRange. The last step of compute(); raw
-   * mode skips it. */
+  /** \brief Edge and vertex points on flat ground go to the nearest face (the last
+   * step of compute(), flatFeaturePoints(); the ball, the bound and their figures:
+   * FlatPointParameters); the graph is unchanged. Default 1e-3 (surface variation),
+   * 0 = off; range FlatPointParameters::kMaxSurfaceVariationRange. Not in raw mode. */
   inline void setFlatPointVariation(double v) { flat_point_variation_ = v; }
   inline double getFlatPointVariation() const { return flat_point_variation_; }
 
