@@ -169,22 +169,15 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::moveFlatFeaturePoints(
   parameters.radius =
     run.segmentation.point_feature_distance + FlatPointParameters::kMargin;
   // the labelled points as the band saw them (smoothed in noise mode), as in
-  // labelPoints(); their balls hold the points the band was built from
+  // labelPoints(); their balls hold the points the band was built from, in the cells
+  // the band recorded for them (pointCell(): kNoCell for skipped points)
   const GridSpec& grid = results.band.grid();
   const auto cellUnits = [&](const PointInT& p) -> Eigen::Vector3f {
     return grid.toCellUnits(Eigen::Vector3d(p.x, p.y, p.z)).template cast<float>();
   };
   std::vector<Eigen::Vector3f> ground(surface.size());
-  std::vector<CellId> ground_cells(surface.size(), kNoCell);
-  const bool recorded = results.band.pointCell().size() == surface.size();
-  for (std::size_t j = 0; j < surface.size(); ++j) {
+  for (std::size_t j = 0; j < surface.size(); ++j)
     ground[j] = cellUnits(surface[j]);
-    if (!pcl::isXYZFinite(surface[j]))
-      continue;
-    ground_cells[j] = recorded ? results.band.pointCell()[j]
-                               : results.band.find(grid.cellOf(Eigen::Vector3d(
-                                   surface[j].x, surface[j].y, surface[j].z)));
-  }
   std::vector<Eigen::Vector3f> points(output.size());
   std::vector<std::uint32_t> labels(output.size());
   std::vector<FeatureClass> classes(output.size());
@@ -196,8 +189,8 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::moveFlatFeaturePoints(
   }
   FlatPointStats stats;
   const std::vector<FlatPointMove> moves =
-    flatFeaturePoints(results.band, ground, ground_cells, points, labels, classes,
-                      results.segmentation.cellLabels(),
+    flatFeaturePoints(results.band, ground, results.band.pointCell(), points, labels,
+                      classes, results.segmentation.cellLabels(),
                       results.segmentation.regionClasses(), parameters, &stats);
   std::ostringstream note;
   note << std::setprecision(3);

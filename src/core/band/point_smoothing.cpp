@@ -2,7 +2,8 @@
 #include <visfeat/core/common/error.h>
 #include <visfeat/core/grid/cell_index.h>
 
-#include <Eigen/Eigenvalues>
+#include "../common/plane_sums.h"
+#include "../grid/cell_members.h"
 
 #include <algorithm>
 #include <cmath>
@@ -42,7 +43,7 @@ smoothPoints(const std::vector<Eigen::Vector3f>& points,
   // (cell, index), so each cell's points are one range and the order is fixed.
   CellIndex index(grid.dims);
   std::vector<CellId> cell_of(n, kNoCell);
-  std::vector<std::uint32_t> cell_count;
+  std::size_t cell_count = 0;
   for (std::size_t i = 0; i < n; ++i) {
     if (!points[i].allFinite())
       continue;
@@ -51,24 +52,14 @@ smoothPoints(const std::vector<Eigen::Vector3f>& points,
       throw Error("smoothing: a point lies outside the grid");
     CellId id = index.find(c);
     if (id == kNoCell) {
-      id = static_cast<CellId>(cell_count.size());
+      id = static_cast<CellId>(cell_count++);
       index.insert(c, id);
-      cell_count.push_back(0);
     }
     cell_of[i] = id;
-    ++cell_count[static_cast<std::size_t>(id)];
   }
-  std::vector<std::size_t> start(cell_count.size() + 1, 0);
-  for (std::size_t c = 0; c < cell_count.size(); ++c)
-    start[c + 1] = start[c] + cell_count[c];
-  std::vector<std::uint32_t> members(start.back());
-  {
-    std::vector<std::size_t> fill(start.begin(), start.end() - 1);
-    for (std::size_t i = 0; i < n; ++i)
-      if (cell_of[i] != kNoCell)
-        members[fill[static_cast<std::size_t>(cell_of[i])]++] =
-          static_cast<std::uint32_t>(i);
-  }
+  const detail::CellMembers buckets(cell_count, cell_of);
+  const std::vector<std::size_t>& start = buckets.start;
+  const std::vector<std::uint32_t>& members = buckets.members;
 
   const double radius = parameters.radius * grid.cell_size;
   const double radius2 = radius * radius;
@@ -79,7 +70,7 @@ smoothPoints(const std::vector<Eigen::Vector3f>& points,
   // Cell by cell: the points of one cell share the cells within reach, looked up once
   // (the lookups were most of the time when each point made its own: 125 a point at 2
   // cells). Each point sums its neighbours in the same fixed order as before.
-  const auto cells = static_cast<std::int64_t>(cell_count.size());
+  const auto cells = static_cast<std::int64_t>(cell_count);
 #pragma omp parallel num_threads(threads)
   {
     std::vector<CellId> near;
@@ -99,28 +90,20 @@ smoothPoints(const std::vector<Eigen::Vector3f>& points,
         const std::size_t i = members[own];
         const Eigen::Vector3d p = points[i].cast<double>();
         // Mean and scatter about p (shifted, for precision), in a fixed order.
-        Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-        Eigen::Matrix3d outer = Eigen::Matrix3d::Zero();
-        int count = 0;
+        detail::PlaneSums sums;
         for (const CellId c : near)
           for (std::size_t m = start[static_cast<std::size_t>(c)];
                m < start[static_cast<std::size_t>(c) + 1]; ++m) {
             const Eigen::Vector3d d = points[members[m]].cast<double>() - p;
-            if (d.squaredNorm() > radius2)
-              continue;
-            sum += d;
-            outer += d * d.transpose();
-            ++count;
+            if (d.squaredNorm() <= radius2)
+              sums.add(d);
           }
-        if (count < parameters.min_neighbours)
+        if (sums.count < static_cast<std::size_t>(parameters.min_neighbours))
           continue;
-        const Eigen::Vector3d mean = sum / count;
-        const Eigen::Matrix3d covariance = outer / count - mean * mean.transpose();
-        const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(covariance);
-        const Eigen::Vector3d normal = solver.eigenvectors().col(0);
+        const Eigen::Vector3d normal = sums.normal();
         // p is the origin of the shifted frame: move it onto the plane through the
         // mean.
-        result[i] = (p + normal * normal.dot(mean)).cast<float>();
+        result[i] = (p + normal * normal.dot(sums.mean())).cast<float>();
       }
     }
   }

@@ -1,8 +1,9 @@
-// Least-squares planes of point sets and the turn between two of them (private to
-// core/graph: the crease-angle measurement).
+// The turn between two least-squares planes (PlaneSums) (private to core/graph: the
+// crease-angle measurement).
 #pragma once
 
 #include "../common/angles.h"
+#include "../common/plane_sums.h"
 
 #include <Eigen/Core>
 #include <Eigen/Eigenvalues>
@@ -15,38 +16,6 @@
 
 namespace visfeat {
 namespace detail {
-
-/** Points accumulated for a least-squares plane. */
-struct PlaneSums
-{
-  std::size_t count = 0;
-  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-  Eigen::Matrix3d outer = Eigen::Matrix3d::Zero();
-
-  /** p relative to a nearby origin, so the sums stay well conditioned. */
-  void add(const Eigen::Vector3d& p)
-  {
-    ++count;
-    sum += p;
-    outer += p * p.transpose();
-  }
-  /** Another set's points (relative to the same origin). */
-  void add(const PlaneSums& other)
-  {
-    count += other.count;
-    sum += other.sum;
-    outer += other.outer;
-  }
-  Eigen::Vector3d mean() const { return sum / double(count); }
-  /** The unit normal of the least-squares plane (smallest principal axis). */
-  Eigen::Vector3d normal() const
-  {
-    const Eigen::Vector3d m = mean();
-    const Eigen::Matrix3d covariance = outer / double(count) - m * m.transpose();
-    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(covariance);
-    return solver.eigenvectors().col(0);
-  }
-};
 
 /** The line where two sides meet (unit): where their planes (normals na, nb) cross;
  * for nearly parallel planes (the cross product is then noise), across the way from

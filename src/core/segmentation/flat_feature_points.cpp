@@ -2,7 +2,8 @@
 #include <visfeat/core/common/threads.h>
 #include <visfeat/core/segmentation/flat_feature_points.h>
 
-#include <Eigen/Eigenvalues>
+#include "../common/plane_sums.h"
+#include "../grid/cell_members.h"
 
 #include <algorithm>
 #include <atomic>
@@ -22,70 +23,6 @@ FlatPointParameters::validate() const
 
 namespace {
 
-/** Points of each band cell, in increasing point order: the points of cell c are
- * order[begin[c] .. begin[c + 1]). */
-struct CellPoints
-{
-  std::vector<std::size_t> begin;
-  std::vector<std::size_t> order;
-
-  CellPoints(std::size_t cells, const std::vector<CellId>& point_cells)
-      : begin(cells + 1, 0)
-  {
-    for (const CellId c : point_cells)
-      if (c != kNoCell)
-        ++begin[static_cast<std::size_t>(c) + 1];
-    for (std::size_t c = 0; c < cells; ++c)
-      begin[c + 1] += begin[c];
-    order.resize(begin[cells]);
-    std::vector<std::size_t> next(begin.begin(), begin.end() - 1);
-    for (std::size_t i = 0; i < point_cells.size(); ++i)
-      if (point_cells[i] != kNoCell)
-        order[next[static_cast<std::size_t>(point_cells[i])]++] = i;
-  }
-};
-
-/** Running sums of the offsets d = p - q of the points in a ball around q (the six
- * distinct second moments, not a 3x3 product per point). */
-struct Scatter
-{
-  std::size_t count = 0;
-  double sx = 0, sy = 0, sz = 0;
-  double xx = 0, xy = 0, xz = 0, yy = 0, yz = 0, zz = 0;
-
-  void add(const Eigen::Vector3d& d)
-  {
-    ++count;
-    sx += d.x();
-    sy += d.y();
-    sz += d.z();
-    xx += d.x() * d.x();
-    xy += d.x() * d.y();
-    xz += d.x() * d.z();
-    yy += d.y() * d.y();
-    yz += d.y() * d.z();
-    zz += d.z() * d.z();
-  }
-
-  /** lambda_0 / trace of the covariance; NaN when fewer than 3 points or no spread. */
-  double variation() const
-  {
-    if (count < 3)
-      return std::numeric_limits<double>::quiet_NaN();
-    const double n = static_cast<double>(count);
-    const Eigen::Vector3d mean(sx / n, sy / n, sz / n);
-    Eigen::Matrix3d covariance;
-    covariance << xx, xy, xz, xy, yy, yz, xz, yz, zz;
-    covariance = covariance / n - mean * mean.transpose();
-    const double trace = covariance.trace();
-    if (!(trace > 0.0))
-      return std::numeric_limits<double>::quiet_NaN();
-    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
-    solver.computeDirect(covariance, Eigen::EigenvaluesOnly);
-    return std::max(0.0, solver.eigenvalues()(0)) / trace;
-  }
-};
-
 bool
 isFeature(FeatureClass c)
 {
@@ -97,10 +34,10 @@ isFeature(FeatureClass c)
 double
 surfaceVariation(const std::vector<Eigen::Vector3d>& points)
 {
-  Scatter scatter;
+  detail::PlaneSums sums;
   for (const Eigen::Vector3d& p : points)
-    scatter.add(p - (points.empty() ? p : points.front()));
-  return scatter.variation();
+    sums.add(p - points.front()); // relative to a point of the set
+  return sums.surfaceVariation();
 }
 
 namespace {
@@ -205,7 +142,7 @@ boxDistance2(const Eigen::Vector3d& q, const CellCoord& c)
 std::vector<std::uint32_t>
 flatTargets(const VoxelBand& band,
             const std::vector<Eigen::Vector3f>& surface,
-            const CellPoints& by_cell,
+            const detail::CellMembers& by_cell,
             const std::vector<Eigen::Vector3f>& points,
             const std::vector<FeatureClass>& classes,
             const std::vector<std::uint32_t>& cell_labels,
@@ -234,7 +171,7 @@ flatTargets(const VoxelBand& band,
              ++k) {
           const std::size_t i = groups.queries[k];
           const Eigen::Vector3d q = points[i].cast<double>();
-          Scatter scatter;
+          detail::PlaneSums scatter;
           double nearest_face = std::numeric_limits<double>::infinity();
           std::uint32_t face = 0;
           for (const auto& [id, at] : block) {
@@ -250,9 +187,9 @@ flatTargets(const VoxelBand& band,
                 face = label;
               }
             }
-            for (std::size_t j = by_cell.begin[cell]; j < by_cell.begin[cell + 1];
+            for (std::size_t j = by_cell.start[cell]; j < by_cell.start[cell + 1];
                  ++j) {
-              const Eigen::Vector3d d = surface[by_cell.order[j]].cast<double>() - q;
+              const Eigen::Vector3d d = surface[by_cell.members[j]].cast<double>() - q;
               if (d.squaredNorm() <= r2)
                 scatter.add(d);
             }
@@ -261,7 +198,7 @@ flatTargets(const VoxelBand& band,
               scatter.count < static_cast<std::size_t>(parameters.min_points))
             continue;
           ++chunk_judged;
-          const double v = scatter.variation();
+          const double v = scatter.surfaceVariation();
           if (v <= parameters.max_surface_variation) {
             target[i] = face;
             variation[i] = v;
@@ -298,8 +235,8 @@ flatFeaturePoints(const VoxelBand& band,
     return {};
   std::vector<double> variation;
   std::vector<std::uint32_t> target =
-    flatTargets(band, surface, CellPoints(band.size(), surface_cells), points, classes,
-                cell_labels, region_classes, parameters, variation, counted);
+    flatTargets(band, surface, detail::CellMembers(band.size(), surface_cells), points,
+                classes, cell_labels, region_classes, parameters, variation, counted);
   // a region all of whose points would move keeps its least flat one (the first on
   // ties)
   std::uint32_t max_label = 0;
