@@ -139,7 +139,9 @@ printHelp(const char* program)
     ": %g point spacings per cell, the spacing estimated from k-NN "
     "distances, at least %d where the band is filled between the points and "
     "%d for a mesh; then doubled, up to %d (-max_search_resolution), while the "
-    "map shows narrow faces or a closed mesh's graph is not closed; %d-%d cells)\n",
+    "map shows narrow faces or creases merged into faces, or a closed surface's graph "
+    "(a closed mesh, or a cloud all around a solid) has gaps, as far as the fill "
+    "allows; %d-%d cells)\n",
     visfeat::kSpacingsPerCell, visfeat::kTopologyResolution,
     visfeat::kTopologyResolution, visfeat::kMaxSearchResolution,
     visfeat::GridSpec::kResolutionRange.min, visfeat::GridSpec::kResolutionRange.max);

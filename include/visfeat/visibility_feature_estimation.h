@@ -109,8 +109,8 @@ public:
    * the band is filled between the points (at most kMaxFillCellsPerSpacing cells a
    * spacing), and kTopologyResolution for a mesh (setInputMesh()) whatever the density
    * of its points; then, while the map shows narrow faces (visfeat::narrowFaces(),
-   * faces narrower than 2 min_radius cells), or, for a closed mesh (meshIsClosed()),
-   * while its graph is not that of a closed part (findGraphGaps(); kSearchOnGraphGaps),
+   * faces narrower than 2 min_radius cells), or, on a closed surface (meshIsClosed(),
+   * bandIsClosed()), while the graph has gaps (findGraphGaps(); kSearchOnGraphGaps),
    * doubled and computed again, up to getMaxSearchResolution() and what the mesh, the
    * fill or the points support (a warning where it cannot go finer); what was chosen
    * and why is in getResolutionEstimate() after compute(). Features must be about 2

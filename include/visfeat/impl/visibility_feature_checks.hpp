@@ -3,6 +3,7 @@
 // cannot be trusted, and why (the band, the map, the noise, the graph).
 #pragma once
 
+#include <visfeat/core/band/band_enclosure.h>
 #include <visfeat/core/band/band_pieces.h>
 #include <visfeat/core/band/tangent_planes.h>
 #include <visfeat/core/common/memory_budget.h>
@@ -240,6 +241,20 @@ warnMergedValleys(const Results& results, Run& run, int max_search_resolution)
   run.warnings.push_back(w.str());
 }
 
+/** \brief Whether the surface of a run is closed, so that a graph with gaps means
+ * features the resolution did not separate (an open surface's border leaves gaps too):
+ * a mesh when it is closed (meshIsClosed()), a one-view depth image never, any other
+ * cloud when its band encloses a volume (bandIsClosed(): sampled all around a solid).
+ */
+template <typename Results, typename Run>
+bool
+closedSurface(const Results& results, const Run& run, bool has_mesh, bool mesh_closed)
+{
+  if (has_mesh)
+    return mesh_closed;
+  return run.fill != SurfaceFill::kOrganized && bandIsClosed(results.band);
+}
+
 } // namespace detail
 
 template <typename PointInT, typename PointOutT>
@@ -428,26 +443,30 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::checkGraph(const Results& resu
   if (!gaps.any())
     return;
   const int min_radius = run.segmentation.components.min_radius;
+  const bool closed =
+    detail::closedSurface(results, run, mesh_ != nullptr, mesh_closed_);
   std::ostringstream w;
-  w << "the graph is not that of a closed part: " << gaps.describe()
-    << ". Features closer than about " << 2 * min_radius << " cells (2 min_radius) at "
+  w << "the graph is not that of a closed part: " << gaps.describe() << ". ";
+  if (closed)
+    w << "Features";
+  else // the border's gaps first: no resolution closes them
+    w << (mesh_ ? "The mesh is open" : "The band encloses no volume (an open scan?)")
+      << ": its border leaves edges without their outer corner, which no resolution "
+         "closes; where gaps lie away from the border, features";
+  w << " closer than about " << 2 * min_radius << " cells (2 min_radius) at "
     << "resolution " << run.resolution.resolution
     << " were not all separated: read the graph as approximate, or ";
   if (detail::atPointsCap(run))
     w << detail::pointsCapAdvice(run);
   else
     w << "raise the resolution" << detail::finerExample(run.resolution.resolution);
-  if (mesh_closed_ && run.search_cap > 0 &&
+  if (closed && run.search_cap > 0 &&
       run.search_cap_reason == detail::kSearchLimitReason)
     w << " (setResolution(), or " << detail::searchFurtherAdvice(max_search_resolution_)
       << ")";
-  else if (!mesh_closed_ && run.search_cap > 0) // the automatic search left it here
-    w << " (setResolution(): the automatic search rises on such gaps for a closed mesh "
-         "only, as a cloud may be an open scan, whose border also leaves edges without "
-         "their outer corner)";
-  else if (!mesh_closed_) // a closed mesh has no border
-    w << " (if the cloud is an open scan, its border also leaves edges without their "
-         "outer corner)";
+  else if (!closed && run.search_cap > 0) // the automatic search left it here
+    w << " (setResolution(): the automatic search rises on such gaps for a closed "
+         "surface only, a closed mesh or a cloud whose band encloses a volume)";
   run.warnings.push_back(w.str());
 }
 

@@ -200,7 +200,13 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::moveFlatFeaturePoints(
       << " of " << stats.feature_points << " edge and vertex points have fewer than "
       << parameters.min_points << " points within " << parameters.radius
       << " cells, too few to tell flat ground, and keep their labels (the step needs "
-         "about 2 points a cell squared: sample denser, or lower the resolution)";
+         "about 2 points a cell squared: sample denser";
+    const double spacing = run.resolution.spacing / grid.cell_size;
+    if (run.fill != SurfaceFill::kPoints && spacing > 1.0) // finer than the points
+      note << "; here the points lie " << spacing
+           << " cells apart, the band filled between them)";
+    else
+      note << ", or lower the resolution)";
     run.notes.push_back(note.str());
   } else if (!moves.empty()) {
     note << "feature points on flat ground: " << moves.size() << " of "

@@ -249,22 +249,33 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::searchResolution(
       step < max_steps ? nextSearchResolution(current, run.search_cap) : 0;
     std::ostringstream found;
     if (faces.empty()) {
-      // A closed mesh bounds a solid: a graph that is not that of a closed part means
-      // features the resolution did not separate (kSearchOnGraphGaps).
-      const GraphGaps gaps = kSearchOnGraphGaps && mesh_closed_ &&
-                                 run.segmentation.complete_regions &&
-                                 !run.segmentation.raw
-                               ? findGraphGaps(results.graph)
-                               : GraphGaps{};
-      if (gaps.any()) {
-        found << "a closed mesh whose graph at resolution " << current
+      // A closed surface bounds a solid: a graph that is not that of a closed part
+      // means features the resolution did not separate (kSearchOnGraphGaps).
+      const GraphGaps gaps =
+        kSearchOnGraphGaps && run.segmentation.complete_regions && !run.segmentation.raw
+          ? findGraphGaps(results.graph)
+          : GraphGaps{};
+      const bool closed =
+        gaps.unseparated() &&
+        detail::closedSurface(results, run, mesh_ != nullptr, mesh_closed_);
+      if (closed) {
+        found << (mesh_ ? "a closed mesh"
+                        : "a closed surface (the band encloses a volume)")
+              << " whose graph at resolution " << current
               << " is not that of a closed part (" << gaps.describe() << ")";
       } else {
         // creases merged into faces, which leave the graph closed (any input)
         const MergedValleys valleys =
           detail::manyMergedValleys(results, run.segmentation);
-        if (!valleys.any())
+        if (!valleys.any()) {
+          if (gaps.unseparated()) // say why the gaps did not raise it
+            run.resolution.reason +=
+              "; the graph at resolution " + std::to_string(current) +
+              " has gaps, not raised on them: " +
+              (mesh_ ? "the mesh is open" : "the band encloses no volume") +
+              " (an open surface's border leaves such gaps)";
           break;
+        }
         found << detail::describeMergedValleys(valleys, min_radius) << " at resolution "
               << current << " (creases merged into faces)";
       }

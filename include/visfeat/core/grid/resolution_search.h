@@ -18,8 +18,9 @@ constexpr int kMaxSearchResolution = 1024;
  * corner on one side only, or not between two faces, are features closer than about
  * 2 min_radius cells that no narrow face shows. Measured 2026-12-02 on the public
  * V-HACD block (no narrow face at 256; 12 of 34 edges with one corner): per-point F1
- * 0.81 at 256 -> 0.94 at 512, 2.7 s -> 5.9 s. Clouds are left out: a scan's border
- * leaves such gaps too. */
+ * 0.81 at 256 -> 0.94 at 512, 2.7 s -> 5.9 s. A cloud counts when its band encloses
+ * a volume (bandIsClosed(): sampled all around a solid); an open scan does not, as its
+ * border leaves such gaps too, and nor does a one-view depth image. */
 constexpr bool kSearchOnGraphGaps = true;
 
 /** \brief Finer resolutions the search tries after the first, at most, up to
