@@ -203,7 +203,7 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::moveFlatFeaturePoints(
          "about 2 points a cell squared: sample denser";
     const double spacing = run.resolution.spacing / grid.cell_size;
     if (run.fill != SurfaceFill::kPoints && spacing > 1.0) // finer than the points
-      note << "; here the points lie " << spacing
+      note << "; here the points lie " << std::fixed << std::setprecision(1) << spacing
            << " cells apart, the band filled between them)";
     else
       note << ", or lower the resolution)";
