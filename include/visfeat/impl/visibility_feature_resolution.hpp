@@ -272,7 +272,9 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::searchResolution(
             run.resolution.reason +=
               "; the graph at resolution " + std::to_string(current) +
               " has gaps, not raised on them: " +
-              (mesh_ ? "the mesh is open" : "the band encloses no volume") +
+              (mesh_                                 ? "the mesh is open"
+               : run.fill == SurfaceFill::kOrganized ? "a one-view depth image"
+                                                     : "the band encloses no volume") +
               " (an open surface's border leaves such gaps)";
           break;
         }
