@@ -84,22 +84,7 @@ TEST(GraphGaps, AClosedBoxHasNone)
   EXPECT_EQ(gaps.not_two_faces, 0u);
   EXPECT_EQ(gaps.lone_regions, 0u);
   EXPECT_FALSE(gaps.any());
-  EXPECT_FALSE(gaps.unseparated());
   EXPECT_EQ(gaps.describe(), "");
-}
-
-TEST(GraphGaps, ALoneRegionIsAGapThatNoResolutionJoins)
-{
-  // a region that touches no other (here one without cells, like a speck apart): the
-  // graph is not closed, but nothing says features merged, so the search does not rise
-  LabelledBox box;
-  box.classes.push_back(FeatureClass::kFace);
-  const GraphGaps gaps = visfeat::findGraphGaps(box.graph());
-  EXPECT_EQ(gaps.one_corner, 0u);
-  EXPECT_EQ(gaps.lone_regions, 1u);
-  EXPECT_TRUE(gaps.any());
-  EXPECT_FALSE(gaps.unseparated());
-  EXPECT_EQ(gaps.describe(), "1 region touches no other");
 }
 
 TEST(GraphGaps, AMissingCornerLeavesThreeEdgesWithOneCorner)
@@ -118,7 +103,6 @@ TEST(GraphGaps, AMissingCornerLeavesThreeEdgesWithOneCorner)
   EXPECT_EQ(gaps.not_two_faces, 0u);
   EXPECT_EQ(gaps.lone_regions, 1u);
   EXPECT_TRUE(gaps.any());
-  EXPECT_TRUE(gaps.unseparated());
   EXPECT_EQ(gaps.describe(), "3 of 12 edges end at a corner on one side only, 1 region "
                              "touches no other");
 }
@@ -182,7 +166,6 @@ TEST(GraphGaps, CornersMergedAcrossAShortEdge)
   EXPECT_EQ(merged.lone_regions, 0u);
   EXPECT_EQ(merged.merged_corners, 1u);
   EXPECT_TRUE(merged.any());
-  EXPECT_TRUE(merged.unseparated());
   EXPECT_EQ(merged.describe(), "1 corner ends 4 or more edges, two leaving within 25 "
                                "degrees of each other (corners merged into one)");
   // across an edge as long as the others, the four edges spread (53 degrees and more):

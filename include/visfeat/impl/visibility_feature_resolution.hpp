@@ -255,9 +255,8 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::searchResolution(
         kSearchOnGraphGaps && run.segmentation.complete_regions && !run.segmentation.raw
           ? findGraphGaps(results.graph)
           : GraphGaps{};
-      const bool closed =
-        gaps.unseparated() &&
-        detail::closedSurface(results, run, mesh_ != nullptr, mesh_closed_);
+      const bool closed = gaps.any() && detail::closedSurface(
+                                          results, run, mesh_ != nullptr, mesh_closed_);
       if (closed) {
         found << (mesh_ ? "a closed mesh"
                         : "a closed surface (the band encloses a volume)")
@@ -268,7 +267,7 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::searchResolution(
         const MergedValleys valleys =
           detail::manyMergedValleys(results, run.segmentation);
         if (!valleys.any()) {
-          if (gaps.unseparated()) // say why the gaps did not raise it
+          if (gaps.any()) // say why the gaps did not raise it
             run.resolution.reason +=
               "; the graph at resolution " + std::to_string(current) +
               " has gaps, not raised on them: " +

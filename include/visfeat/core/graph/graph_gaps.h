@@ -55,15 +55,6 @@ struct GraphGaps
            merged_corners > 0;
   }
 
-  /** \brief Whether a gap that features closer than the separation leave is there:
-   * any() but for lone regions (pieces of the band apart from the rest, or specks
-   * that no other region touches), which a finer resolution does not join. The
-   * automatic resolution search rises on these (kSearchOnGraphGaps). */
-  bool unseparated() const
-  {
-    return one_corner > 0 || not_two_faces > 0 || merged_corners > 0;
-  }
-
   /** \brief One line for the user, e.g. "11 of 28 edges end at a corner on one side
    * only and 3 more at neither, 2 edges do not lie between two faces, 1 region touches
    * no other (2 more edges have one face on both sides: creases fading into it)";
