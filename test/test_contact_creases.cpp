@@ -1,8 +1,13 @@
 // locateContactCreases() on two planes meeting at a crease whose two face regions meet
-// a cell beside it (no edge region between them), and FeatureSegmentation's
-// addEdgeRegions() that turns the crease's cells into an edge.
+// beside it (no edge region between them), cutOffFacePieces() and FeatureSegmentation's
+// moveFaceCells() that give the strip a face spilled onto back to the other face.
 
+#include "sheet_bands.h"
+
+#include <visfeat/core/common/error.h>
 #include <visfeat/core/graph/contact_creases.h>
+#include <visfeat/core/graph/face_pieces.h>
+#include <visfeat/core/segmentation/feature_segmentation.h>
 
 #include <gtest/gtest.h>
 
@@ -22,9 +27,9 @@ using visfeat::FeatureClass;
 constexpr double kPi = 3.14159265358979323846;
 
 /** Two half-planes meeting along the y axis (cell units, cell size 1, the crease on
- * cell centres): face A is z = 0 for x <= 0, face B turns up from it by `turn`
- * degrees. The regions meet one cell up B's side (the watershed's boundary, not the
- * crease): B's points within 1.5 of the crease are labelled A. */
+ * cell centres): face A is z = 0 for x <= 0, face B leaves the crease at `turn` degrees
+ * from A. The regions meet up B's side (the watershed's boundary, not the crease): B's
+ * points within `spill` (1.5 unless given) of the crease are labelled A. */
 struct Crease
 {
   visfeat::VoxelBand band;
@@ -62,7 +67,7 @@ bandOfPoints(Crease& c, const visfeat::GridSpec& grid)
 }
 
 Crease
-creaseOfTwoPlanes(double turn, double length = 40.0)
+creaseOfTwoPlanes(double turn, double length = 40.0, double spill = 1.5)
 {
   Crease c;
   visfeat::GridSpec grid;
@@ -76,7 +81,7 @@ creaseOfTwoPlanes(double turn, double length = 40.0)
       c.points.emplace_back(-s, y, 0.0); // A
       c.labels.push_back(1);
       c.points.push_back(Eigen::Vector3d(0.0, y, 0.0) + s * up); // B
-      c.labels.push_back(s <= 1.5 ? 1 : 2);
+      c.labels.push_back(s <= spill ? 1 : 2);
     }
   bandOfPoints(c, grid);
   return c;
@@ -120,6 +125,91 @@ TEST(ContactCreases, ARightAngleCreaseIsFoundOnTheCreaseNotOnTheBoundary)
   }
   for (int y = 8; y < 40; ++y)
     EXPECT_TRUE(row[static_cast<std::size_t>(y)]) << "row " << y;
+}
+
+TEST(ContactCreases, ACreaseTheBoundarySpilledFarFromIsFoundWalkingAcross)
+{
+  // A's region holds B's surface up to 6 cells from the crease: at the contact, the
+  // planes fitted by label are one plane (B's), and the crease lies beyond the window
+  const Crease c = creaseOfTwoPlanes(90.0, 40.0, 6.0);
+  const std::vector<ContactCrease> creases = locate(c);
+  ASSERT_EQ(creases.size(), 1u);
+  EXPECT_EQ(creases[0].faces[0], 1u);
+  EXPECT_EQ(creases[0].faces[1], 2u);
+  EXPECT_GT(creases[0].degrees, 70.0);
+  EXPECT_LE(creases[0].degrees, 90.5);
+  std::vector<char> row(48, 0);
+  for (const CellId cell : creases[0].cells) {
+    EXPECT_LE(offCrease(c, cell), 1.5) << "cell " << cell;
+    row[static_cast<std::size_t>(c.band.coord(cell).y())] = 1;
+  }
+  for (int y = 8; y < 40; ++y)
+    EXPECT_TRUE(row[static_cast<std::size_t>(y)]) << "row " << y;
+}
+
+TEST(ContactCreases, TheStripCutOffByTheCreasesEdgeGoesToTheOtherFace)
+{
+  Crease c = creaseOfTwoPlanes(90.0, 40.0, 6.0);
+  const std::vector<ContactCrease> creases = locate(c);
+  ASSERT_EQ(creases.size(), 1u);
+  // the crease's cells an edge region (label 3): A's strip on B (z >= 2) is cut off
+  c.classes.push_back(FeatureClass::kEdge);
+  for (const CellId cell : creases[0].cells)
+    c.cell_labels[static_cast<std::size_t>(cell)] = 3;
+  const std::vector<visfeat::FacePiece> pieces =
+    visfeat::cutOffFacePieces(c.band, c.cell_labels, c.classes, {{{1u, 2u}}});
+  ASSERT_EQ(pieces.size(), 1u);
+  EXPECT_EQ(pieces[0].into, 2u);
+  std::size_t strip = 0; // A's cells up B's side
+  for (std::size_t k = 0; k < c.band.size(); ++k)
+    strip += c.cell_labels[k] == 1 && c.band.coord(static_cast<CellId>(k)).z() >= 34;
+  EXPECT_EQ(pieces[0].cells.size(), strip);
+  for (const CellId cell : pieces[0].cells)
+    EXPECT_GE(c.band.coord(cell).z(), 34) << "cell " << cell; // z >= 1.5: B's side
+  // a piece sharing more boundary with a third face than with the pair's other stays
+  EXPECT_TRUE(
+    visfeat::cutOffFacePieces(c.band, c.cell_labels, c.classes, {{{1u, 3u}}}).empty());
+  // without the edge, A is one piece: nothing is cut off
+  const Crease whole = creaseOfTwoPlanes(90.0, 40.0, 6.0);
+  EXPECT_TRUE(visfeat::cutOffFacePieces(whole.band, whole.cell_labels, whole.classes,
+                                        {{{1u, 2u}}})
+                .empty());
+}
+
+TEST(ContactCreases, MovedFaceCellsTakeTheirNewFace)
+{
+  // raw mode: two face cores of 4 x 4 cells, a valley column between them
+  const auto sheet =
+    visfeat_test::paintSheet({"333313333", "333313333", "333313333", "333313333"}, 3);
+  visfeat::SegmentationParameters p;
+  p.raw = true;
+  p.components.min_radius = 3;
+  p.components.vertex_max_cells = 4;
+  p.components.dimensionality = 2.0;
+  p.components.face_min_depth = 2;
+  p.components.flat_core_faces = false;
+  visfeat::FeatureSegmentation seg =
+    visfeat::FeatureSegmentation::compute(sheet.band, sheet.map, p);
+  ASSERT_EQ(seg.regions().size(), 2u);
+  ASSERT_EQ(seg.regions()[0].feature_class, FeatureClass::kFace);
+  ASSERT_EQ(seg.regions()[1].feature_class, FeatureClass::kFace);
+  // face 1's column x = 3 and the unlabelled valley cell (4, 0) go to face 2
+  const std::vector<CellId> moved{sheet.at(3, 0), sheet.at(3, 1), sheet.at(3, 2),
+                                  sheet.at(3, 3), sheet.at(4, 0)};
+  const std::vector<std::uint32_t> renumbered = seg.moveFaceCells({moved}, {2u});
+  ASSERT_EQ(renumbered.size(), 3u);
+  EXPECT_EQ(renumbered[1], 1u);
+  EXPECT_EQ(renumbered[2], 2u);
+  for (int y = 0; y < 4; ++y)
+    for (int x = 0; x < 9; ++x) {
+      const std::uint32_t expected = x < 3 ? 1u : x == 4 ? 0u : 2u;
+      EXPECT_EQ(seg.cellLabels()[static_cast<std::size_t>(sheet.at(x, y))], expected)
+        << x << "," << y;
+    }
+  EXPECT_EQ(seg.regions()[0].cells, 12u);
+  EXPECT_EQ(seg.regions()[1].cells, 20u);
+  EXPECT_THROW(seg.moveFaceCells({moved}, {3u}), visfeat::Error); // no such face
+  EXPECT_THROW(seg.moveFaceCells({moved}, {}), visfeat::Error);
 }
 
 TEST(ContactCreases, AShallowTurnPlacesNoCrease)

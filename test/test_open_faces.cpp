@@ -5,6 +5,7 @@
 
 #include "graph_sheet.h"
 
+#include <visfeat/core/common/error.h>
 #include <visfeat/core/common/feature_class.h>
 #include <visfeat/core/graph/open_faces.h>
 
@@ -69,6 +70,31 @@ TEST(OpenFaces, AFaceBoundedByAClosedRimStays)
   const LabelledSheet plain(kSliverClasses,
                             [](int x, int y) { return creaseWithSliver(x, y, false); });
   EXPECT_EQ(visfeat::openFaceMerge(plain.graph), identity(8));
+}
+
+TEST(OpenFaces, SliversOnBothSidesJoinTheFaceEachSharesMostBoundaryWith)
+{
+  // F8 (y 21..23) between E3 and F2, and F9 (y 16..18) between F1 and E3: E3's faces
+  // are the two slivers, and F1 and F2 both touch both of its corners
+  const auto label = [](int x, int y) -> std::uint32_t {
+    if (in(y, 16, 18) && in(x, 4, 19))
+      return 9;
+    return creaseWithSliver(x, y, true);
+  };
+  std::vector<FeatureClass> classes = kSliverClasses;
+  classes.push_back(kF);
+  const LabelledSheet sheet(classes, label);
+  ASSERT_EQ(sheet.graph.facesOfEdge(3), Labels({8, 9}));
+  ASSERT_EQ(sheet.graph.neighbours(4, kF), Labels({1, 2, 8, 9}));
+  ASSERT_EQ(sheet.graph.neighbours(5, kF), Labels({1, 2, 8, 9}));
+  // the graph alone cannot tell which face each was cut from
+  EXPECT_EQ(visfeat::openFaceMerge(sheet.graph), identity(9));
+  Labels expected = identity(9);
+  expected[8] = 2;
+  expected[9] = 1;
+  EXPECT_EQ(visfeat::openFaceMerge(sheet.graph, sheet.band, sheet.labels), expected);
+  EXPECT_THROW(visfeat::openFaceMerge(sheet.graph, sheet.band, Labels(3, 1)),
+               visfeat::Error);
 }
 
 TEST(OpenFaces, AVertexInsideOneCreaseJoinsTheLargerCrease)

@@ -6,6 +6,7 @@
 #include <visfeat/core/graph/contact_creases.h>
 #include <visfeat/core/graph/corner_meets.h>
 #include <visfeat/core/graph/edge_bridges.h>
+#include <visfeat/core/graph/face_pieces.h>
 #include <visfeat/core/graph/open_faces.h>
 #include <visfeat/impl/visibility_feature_estimation.hpp>
 
@@ -43,6 +44,51 @@ restoreCreaseAngles(TopologyGraph& graph,
     if (now[old] != 0 && std::isfinite(angle_of[old]) &&
         graph.node(now[old]).feature_class == FeatureClass::kEdge)
       graph.setCreaseAngle(now[old], angle_of[old]);
+}
+
+/** After contact creases became edges (addRegions(), renumbered: per label before,
+ * its label now): the pieces of their faces that the new edges cut off
+ * (cutOffFacePieces()) go to the face on their side, and so do the face points of their
+ * cells (cell_of(i): point i's band cell); the labels of all points and renumbered
+ * follow the renumbering. */
+template <typename Results, typename Cloud, typename CellOf>
+void
+moveCutOffPieces(Results& results,
+                 Cloud& output,
+                 const std::vector<ContactCrease>& creases,
+                 std::vector<std::uint32_t>& renumbered,
+                 const CellOf& cell_of)
+{
+  std::vector<std::array<std::uint32_t, 2>> pairs;
+  for (const ContactCrease& crease : creases)
+    pairs.push_back({{renumbered[crease.faces[0]], renumbered[crease.faces[1]]}});
+  const std::vector<FacePiece> pieces =
+    cutOffFacePieces(results.band, results.segmentation.cellLabels(),
+                     results.segmentation.regionClasses(), pairs);
+  if (pieces.empty())
+    return;
+  std::vector<std::vector<CellId>> cells;
+  std::vector<std::uint32_t> faces;
+  std::vector<std::uint32_t> moved_to(results.band.size(), 0); // per cell, 0: stays
+  for (const FacePiece& piece : pieces) {
+    cells.push_back(piece.cells);
+    faces.push_back(piece.into);
+    for (const CellId c : piece.cells)
+      moved_to[static_cast<std::size_t>(c)] = piece.into;
+  }
+  const std::vector<std::uint32_t> moved =
+    results.segmentation.moveFaceCells(cells, faces);
+  const auto face = static_cast<std::uint8_t>(FeatureClass::kFace);
+  for (std::size_t i = 0; i < output.size(); ++i) {
+    auto& p = output[i];
+    const CellId cell = cell_of(i);
+    if (p.feature_class == face && cell != kNoCell &&
+        moved_to[static_cast<std::size_t>(cell)] != 0)
+      p.label = moved_to[static_cast<std::size_t>(cell)];
+    p.label = moved[p.label];
+  }
+  for (std::uint32_t& label : renumbered)
+    label = moved[label];
 }
 
 } // namespace detail
@@ -133,12 +179,15 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::addContactCreases(
     cells.push_back(corner);
     new_classes.push_back(FeatureClass::kVertex);
   }
-  const std::vector<std::uint32_t> renumbered =
+  std::vector<std::uint32_t> renumbered =
     results.segmentation.addRegions(cells, new_classes);
+  relabelAddedPoints(results, output, renumbered);
+  detail::moveCutOffPieces(results, output, creases, renumbered, [&](std::size_t i) {
+    return bandCellOf(results.band, static_cast<std::size_t>((*indices_)[i]));
+  });
   const std::vector<std::uint32_t>& cell_labels = results.segmentation.cellLabels();
   const std::vector<Region>& regions = results.segmentation.regions();
 
-  relabelAddedPoints(results, output, renumbered);
   std::vector<char> fresh(regions.size() + 1, 1); // labels of the new regions
   for (const std::uint32_t label : renumbered)
     fresh[label] = 0;
@@ -183,7 +232,8 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::joinSplitCorners(
   // A face sliver bounded by one crease between two corners (openFaceMerge) joins the
   // face it was cut from; the vertex that then lies inside one crease
   // (creaseInnerVertexMerge) joins it.
-  mergeKeepingAngles(openFaceMerge(results.graph));
+  mergeKeepingAngles(
+    openFaceMerge(results.graph, results.band, results.segmentation.cellLabels()));
   mergeKeepingAngles(creaseInnerVertexMerge(results.graph));
 }
 

@@ -81,6 +81,79 @@ creaseLine(const PlaneSums& a, const PlaneSums& b, double min_sine, CreaseLine& 
   return true;
 }
 
+/** The sum of squared distances of a set's points to its least-squares plane. */
+double
+residual(const PlaneSums& sums)
+{
+  if (sums.count < 3)
+    return 0.0;
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
+  solver.computeDirect(sums.covariance(), Eigen::EigenvaluesOnly);
+  return static_cast<double>(sums.count) * std::max(0.0, solver.eigenvalues()(0));
+}
+
+/** A split found walking across a contact holds a crease when its two planes leave at
+ * most this share of the scatter that one plane through both halves leaves (sums of
+ * squared distances): two surfaces meet at the split, not two layers side by side.
+ * Measured on splits of at least the minimum crease angle: the public icosahedron's
+ * crease that the watershed spilled across (500,000 points, 912 cells) 0.00-0.55, half
+ * of them below 0.10; two sheets 10 degrees apart meeting at a wedge (the unit test
+ * ContactCreases.AShallowTurnPlacesNoCrease), whose halves each hold both, 0.6-1.0. */
+constexpr double kWalkedSplitResidualRatio = 0.25;
+
+/** Where the planes fitted by label at a contact hardly turn, the watershed's boundary
+ * lies beside the crease (a face holds a strip of the other's surface up to the
+ * contact, and both fit one plane there). Walking across the contact,
+ * kContactScanWindows windows to both sides in steps of half a window, the points of
+ * both faces within the window at each position split by the plane across the walk
+ * there: the sharpest split of at least min_crease_angle (and min_sine) whose planes
+ * leave at most kWalkedSplitResidualRatio of one plane's scatter gives the crease's
+ * line (relative to `at`), and `offset` its position's distance from `at` (world
+ * units). As detail::contactTurn() walks for the crease-angle rule, so a contact the
+ * rule keeps has its line here. False when no position turns enough. */
+bool
+walkedCreaseLine(const FacePointIndex& index,
+                 const std::vector<Eigen::Vector3d>& points,
+                 const std::vector<std::uint32_t>& labels,
+                 const std::array<std::uint32_t, 2>& pair,
+                 const Eigen::Vector3d& at,
+                 const Eigen::Vector3d& across,
+                 double radius,
+                 double min_sine,
+                 double min_crease_angle,
+                 CreaseLine& line,
+                 double& offset)
+{
+  const int steps = static_cast<int>(2.0 * CreaseAngleParameters::kContactScanWindows);
+  double sharpest = 0.0;
+  for (const double way : {1.0, -1.0})
+    for (int k = 1; k <= steps; ++k) {
+      const Eigen::Vector3d shift = (way * 0.5 * radius * k) * across;
+      PlaneSums before, after;
+      index.forEachWithin(at + shift, radius, [&](std::uint32_t i) {
+        if (labels[i] != pair[0] && labels[i] != pair[1])
+          return;
+        const Eigen::Vector3d d = points[i] - at - shift; // from the position
+        (d.dot(across) > 0.0 ? after : before).add(d);
+      });
+      CreaseLine found;
+      if (!creaseLine(before, after, min_sine, found) ||
+          !(found.turn >= min_crease_angle) || found.turn <= sharpest ||
+          found.distance(Eigen::Vector3d::Zero()) > radius)
+        continue;
+      PlaneSums both = before;
+      both.add(after);
+      const double ratio = (residual(before) + residual(after)) / residual(both);
+      if (!(ratio <= kWalkedSplitResidualRatio))
+        continue;
+      sharpest = found.turn;
+      found.point += shift; // relative to at
+      line = found;
+      offset = 0.5 * radius * k;
+    }
+  return sharpest > 0.0;
+}
+
 /** One end of a crease: its outermost sample's centre and line, and the way out. */
 struct CreaseEnd
 {
@@ -285,16 +358,24 @@ locateContactCreases(const VoxelBand& band,
               side_b.add(points[i] - at);
           });
           CreaseLine line;
-          if (!creaseLine(side_a, side_b, min_sine, line))
-            break;
-          if (!(line.turn >= min_crease_angle))
-            break;
+          double offset = 0.0; // of a crease found walking across, world units
+          if (!creaseLine(side_a, side_b, min_sine, line) ||
+              !(line.turn >= min_crease_angle)) {
+            const Eigen::Vector3d across = side_a.count >= 3 && side_b.count >= 3
+                                             ? acrossDirection(side_a, side_b)
+                                             : Eigen::Vector3d::Zero();
+            if (across.isZero() ||
+                !walkedCreaseLine(index, points, labels, pair, at, across, radius,
+                                  min_sine, min_crease_angle, line, offset))
+              break;
+          }
           Sample sample;
           sample.pair = pair;
           sample.turn = line.turn;
           sample.at = at;
           sample.line = line;
-          forEachCellAround(band, at_cell, reach, [&](CellId m) {
+          const int cells_reach = reach + static_cast<int>(std::ceil(offset / cell));
+          forEachCellAround(band, at_cell, cells_reach, [&](CellId m) {
             const std::uint32_t l = cell_labels[static_cast<std::size_t>(m)];
             if ((l == a || l == b) &&
                 line.distance(grid.cellCenter(band.coord(m)) - at) <= half_width)

@@ -1,8 +1,11 @@
+#include <visfeat/core/common/error.h>
 #include <visfeat/core/graph/open_faces.h>
 
 #include <algorithm>
 #include <iterator>
+#include <map>
 #include <numeric>
+#include <string>
 
 namespace visfeat {
 namespace {
@@ -25,13 +28,14 @@ otherEnd(const TopologyGraph& graph, std::uint32_t e, std::uint32_t v)
   return ends[0] == v ? ends[1] : ends[0];
 }
 
-} // namespace
-
-std::vector<std::uint32_t>
-openFaceMerge(const TopologyGraph& graph)
+/** Per face region, the faces that could have lost it (openFaceMerge()): the faces
+ * joined to both ends of its one edge, but the edge's two; empty for a face that is no
+ * open face. */
+std::vector<std::vector<std::uint32_t>>
+openFaceSources(const TopologyGraph& graph)
 {
-  std::vector<std::uint32_t> into = identityMerge(graph);
   const auto n = static_cast<std::uint32_t>(graph.size());
+  std::vector<std::vector<std::uint32_t>> sources(n + 1);
   for (std::uint32_t f = 1; f <= n; ++f) {
     if (graph.node(f).feature_class != FeatureClass::kFace)
       continue;
@@ -48,19 +52,106 @@ openFaceMerge(const TopologyGraph& graph)
     // the faces of both ends but the edge's two (all lists ascending)
     const std::vector<std::uint32_t> a = graph.neighbours(ends[0], FeatureClass::kFace);
     const std::vector<std::uint32_t> b = graph.neighbours(ends[1], FeatureClass::kFace);
-    std::vector<std::uint32_t> both, others;
+    std::vector<std::uint32_t> both;
     std::set_intersection(a.begin(), a.end(), b.begin(), b.end(),
                           std::back_inserter(both));
     std::set_difference(both.begin(), both.end(), faces.begin(), faces.end(),
-                        std::back_inserter(others));
-    if (others.size() == 1 && graph.node(others[0]).cells > graph.node(f).cells)
-      into[f] = others[0];
+                        std::back_inserter(sources[f]));
+  }
+  return sources;
+}
+
+/** Per face with several sources, the cells it shares with each (6-neighbour pairs of
+ * cells): one pass over the band, looking around the cells of those faces only. */
+std::map<std::uint32_t, std::map<std::uint32_t, std::size_t>>
+sharedBoundaries(const std::vector<std::vector<std::uint32_t>>& sources,
+                 const VoxelBand& band,
+                 const std::vector<std::uint32_t>& cell_labels)
+{
+  std::map<std::uint32_t, std::map<std::uint32_t, std::size_t>> shared;
+  std::vector<char> wanted(sources.size(), 0);
+  bool any = false;
+  for (std::size_t f = 0; f < sources.size(); ++f)
+    if (sources[f].size() > 1)
+      wanted[f] = any = true;
+  if (!any)
+    return shared;
+  static const CellCoord kSteps[6] = {{1, 0, 0},  {-1, 0, 0}, {0, 1, 0},
+                                      {0, -1, 0}, {0, 0, 1},  {0, 0, -1}};
+  for (std::size_t c = 0; c < cell_labels.size(); ++c) {
+    const std::uint32_t f = cell_labels[c];
+    if (f >= wanted.size() || !wanted[f])
+      continue;
+    for (const CellCoord& step : kSteps) {
+      const CellId m = band.find(band.coord(static_cast<CellId>(c)) + step);
+      if (m == kNoCell)
+        continue;
+      const std::uint32_t g = cell_labels[static_cast<std::size_t>(m)];
+      if (g != f && g != 0)
+        ++shared[f][g];
+    }
+  }
+  return shared;
+}
+
+std::vector<std::uint32_t>
+mergeOpenFaces(const TopologyGraph& graph,
+               const VoxelBand* band,
+               const std::vector<std::uint32_t>* cell_labels)
+{
+  std::vector<std::uint32_t> into = identityMerge(graph);
+  const std::vector<std::vector<std::uint32_t>> sources = openFaceSources(graph);
+  const auto shared =
+    band ? sharedBoundaries(sources, *band, *cell_labels)
+         : std::map<std::uint32_t, std::map<std::uint32_t, std::size_t>>{};
+  for (std::uint32_t f = 1; f < sources.size(); ++f) {
+    std::uint32_t from = 0;
+    if (sources[f].size() == 1) {
+      from = sources[f][0];
+    } else if (sources[f].size() > 1 && shared.count(f)) {
+      // the source it shares the most boundary with, when that one is alone
+      std::size_t most = 0, ties = 0;
+      for (const std::uint32_t s : sources[f]) {
+        const auto it = shared.at(f).find(s);
+        const std::size_t count = it == shared.at(f).end() ? 0 : it->second;
+        if (count > most) {
+          most = count;
+          from = s;
+          ties = 0;
+        } else if (count == most) {
+          ++ties;
+        }
+      }
+      if (most == 0 || ties > 0)
+        from = 0;
+    }
+    if (from != 0 && graph.node(from).cells > graph.node(f).cells)
+      into[f] = from;
   }
   // a face joins a larger one only: no cycle
   for (std::uint32_t& target : into)
     while (into[target] != target)
       target = into[target];
   return into;
+}
+
+} // namespace
+
+std::vector<std::uint32_t>
+openFaceMerge(const TopologyGraph& graph)
+{
+  return mergeOpenFaces(graph, nullptr, nullptr);
+}
+
+std::vector<std::uint32_t>
+openFaceMerge(const TopologyGraph& graph,
+              const VoxelBand& band,
+              const std::vector<std::uint32_t>& cell_labels)
+{
+  if (cell_labels.size() != band.size())
+    throw Error("openFaceMerge: " + std::to_string(cell_labels.size()) +
+                " cell labels for a band of " + std::to_string(band.size()) + " cells");
+  return mergeOpenFaces(graph, &band, &cell_labels);
 }
 
 std::vector<std::uint32_t>

@@ -219,4 +219,34 @@ FeatureSegmentation::addRegions(const std::vector<std::vector<CellId>>& cells,
   return renumbered;
 }
 
+std::vector<std::uint32_t>
+FeatureSegmentation::moveFaceCells(const std::vector<std::vector<CellId>>& cells,
+                                   const std::vector<std::uint32_t>& faces)
+{
+  if (faces.size() != cells.size())
+    throw Error("moveFaceCells: " + std::to_string(cells.size()) +
+                " lists of cells but " + std::to_string(faces.size()) + " faces");
+  const std::size_t n = regions_.size();
+  std::vector<FeatureClass> classes(n + 1, FeatureClass::kNone);
+  for (std::size_t l = 1; l <= n; ++l)
+    classes[l] = regions_[l - 1].feature_class;
+  for (std::size_t r = 0; r < cells.size(); ++r) {
+    if (faces[r] == 0 || faces[r] > n || classes[faces[r]] != FeatureClass::kFace)
+      throw Error("moveFaceCells: region " + std::to_string(faces[r]) +
+                  " is not a face region");
+    for (const CellId c : cells[r]) {
+      if (c < 0 || static_cast<std::size_t>(c) >= labels_.size())
+        throw Error("moveFaceCells: cell " + std::to_string(c) + " is not one of the " +
+                    std::to_string(labels_.size()) + " band cells");
+      std::uint32_t& label = labels_[static_cast<std::size_t>(c)];
+      if (label != 0 && classes[label] == FeatureClass::kFace)
+        label = faces[r];
+    }
+  }
+  std::vector<std::uint32_t> renumbered =
+    renumberRegions(labels_, classes, cores_.cellLabels(), regions_);
+  renumbered.resize(n + 1);
+  return renumbered;
+}
+
 } // namespace visfeat

@@ -215,6 +215,18 @@ public:
   std::vector<std::uint32_t> addRegions(const std::vector<std::vector<CellId>>& cells,
                                         const std::vector<FeatureClass>& list_classes);
 
+  /** \brief Moves face cells to other faces: each listed cell that belongs to a face
+   * region takes the label faces[r] of its list r (a face region), e.g. a piece of a
+   * face that a new edge cut off, to the face on its side (the estimator's contact
+   * creases). Other cells keep theirs. Labels are then renumbered as mergeRegions()
+   * does.
+   * \return per old label (index 0 unused, 0 -> 0), its new label.
+   * \throws visfeat::Error for a cell id out of range, faces of another size than
+   *         cells, or a target that is not a face region. */
+  std::vector<std::uint32_t>
+  moveFaceCells(const std::vector<std::vector<CellId>>& cells,
+                const std::vector<std::uint32_t>& faces);
+
 private:
   ComponentSet cores_;
   std::vector<std::uint32_t> labels_;
