@@ -104,6 +104,20 @@ offCrease(const Crease& c, CellId cell)
   return std::hypot(p.x(), p.z());
 }
 
+/** Every cell of the crease within 1.5 cells of the true crease, and the crease
+ * covered along its length (rows y = 8..39, away from the sheet's ends). */
+void
+expectOnTheCrease(const Crease& c, const ContactCrease& crease)
+{
+  std::vector<char> row(48, 0);
+  for (const CellId cell : crease.cells) {
+    EXPECT_LE(offCrease(c, cell), 1.5) << "cell " << cell;
+    row[static_cast<std::size_t>(c.band.coord(cell).y())] = 1;
+  }
+  for (int y = 8; y < 40; ++y)
+    EXPECT_TRUE(row[static_cast<std::size_t>(y)]) << "row " << y;
+}
+
 TEST(ContactCreases, ARightAngleCreaseIsFoundOnTheCreaseNotOnTheBoundary)
 {
   const Crease c = creaseOfTwoPlanes(90.0);
@@ -116,15 +130,8 @@ TEST(ContactCreases, ARightAngleCreaseIsFoundOnTheCreaseNotOnTheBoundary)
   EXPECT_GT(creases[0].degrees, 45.0);
   EXPECT_LE(creases[0].degrees, 90.5);
   EXPECT_GE(creases[0].samples, visfeat::kMinContactCreaseSamples);
-  // every cell within 1.5 cells of the crease (the boundary is 1.5 up B), and the
-  // crease covered along its length (rows y = 4..35, away from the sheet's ends)
-  std::vector<char> row(48, 0);
-  for (const CellId cell : creases[0].cells) {
-    EXPECT_LE(offCrease(c, cell), 1.5) << "cell " << cell;
-    row[static_cast<std::size_t>(c.band.coord(cell).y())] = 1;
-  }
-  for (int y = 8; y < 40; ++y)
-    EXPECT_TRUE(row[static_cast<std::size_t>(y)]) << "row " << y;
+  // on the crease, not on the boundary 1.5 cells up B
+  expectOnTheCrease(c, creases[0]);
 }
 
 TEST(ContactCreases, ACreaseTheBoundarySpilledFarFromIsFoundWalkingAcross)
@@ -138,13 +145,7 @@ TEST(ContactCreases, ACreaseTheBoundarySpilledFarFromIsFoundWalkingAcross)
   EXPECT_EQ(creases[0].faces[1], 2u);
   EXPECT_GT(creases[0].degrees, 70.0);
   EXPECT_LE(creases[0].degrees, 90.5);
-  std::vector<char> row(48, 0);
-  for (const CellId cell : creases[0].cells) {
-    EXPECT_LE(offCrease(c, cell), 1.5) << "cell " << cell;
-    row[static_cast<std::size_t>(c.band.coord(cell).y())] = 1;
-  }
-  for (int y = 8; y < 40; ++y)
-    EXPECT_TRUE(row[static_cast<std::size_t>(y)]) << "row " << y;
+  expectOnTheCrease(c, creases[0]);
 }
 
 TEST(ContactCreases, TheStripCutOffByTheCreasesEdgeGoesToTheOtherFace)
