@@ -27,6 +27,9 @@ struct FacePiece
  * from it. For each pair (a, b), every 6-connected piece of face a but its largest
  * (by cells) goes to b when it shares more boundary with b (6-neighbour pairs of cells)
  * than with any other face, and the same the other way round. Deterministic.
+ *
+ * Source: visfeat (not in the paper).
+ * \param[in] band the band the labels are of
  * \param[in] cell_labels per band cell, its region label, the creases' edges added
  * \param[in] classes per region, its class (classes[label - 1])
  * \param[in] pairs the creases' face pairs, in the labels of cell_labels
