@@ -5,6 +5,7 @@
 #include "../common/angles.h"
 #include "face_point_index.h"
 #include "plane_sums.h"
+#include "region_boundaries.h"
 
 #include <Eigen/Eigenvalues>
 
@@ -15,18 +16,11 @@
 
 namespace visfeat {
 
+using detail::classOfLabel;
 using detail::FacePointIndex;
 using detail::PlaneSums;
 
 namespace {
-
-/** The class of region `label` (classes[label - 1]; kNone for 0 or past the end). */
-FeatureClass
-classOfLabel(const std::vector<FeatureClass>& classes, std::uint32_t label)
-{
-  return label == 0 || label > classes.size() ? FeatureClass::kNone
-                                              : classes[label - 1];
-}
 
 /** Calls f(m) for each band cell m in the cube of cells within `reach` of cell `at`,
  * in z, y, x order (the order the results depend on). */
@@ -152,6 +146,35 @@ walkedCreaseLine(const FacePointIndex& index,
       offset = 0.5 * radius * k;
     }
   return sharpest > 0.0;
+}
+
+/** The crease line at a contact (relative to `at`): where the planes fitted to the two
+ * faces' points within the window (side_a, side_b, by label) cross, when they turn by
+ * at least min_crease_angle (offset 0); otherwise the line walkedCreaseLine() finds
+ * across the contact (offset: how far from `at`, world units). False when neither. */
+bool
+contactLine(const FacePointIndex& index,
+            const std::vector<Eigen::Vector3d>& points,
+            const std::vector<std::uint32_t>& labels,
+            const std::array<std::uint32_t, 2>& pair,
+            const Eigen::Vector3d& at,
+            const PlaneSums& side_a,
+            const PlaneSums& side_b,
+            double radius,
+            double min_sine,
+            double min_crease_angle,
+            CreaseLine& line,
+            double& offset)
+{
+  offset = 0.0;
+  if (creaseLine(side_a, side_b, min_sine, line) && line.turn >= min_crease_angle)
+    return true;
+  if (side_a.count < 3 || side_b.count < 3)
+    return false;
+  const Eigen::Vector3d across = acrossDirection(side_a, side_b);
+  return !across.isZero() &&
+         walkedCreaseLine(index, points, labels, pair, at, across, radius, min_sine,
+                          min_crease_angle, line, offset);
 }
 
 /** One end of a crease: its outermost sample's centre and line, and the way out. */
@@ -359,16 +382,9 @@ locateContactCreases(const VoxelBand& band,
           });
           CreaseLine line;
           double offset = 0.0; // of a crease found walking across, world units
-          if (!creaseLine(side_a, side_b, min_sine, line) ||
-              !(line.turn >= min_crease_angle)) {
-            const Eigen::Vector3d across = side_a.count >= 3 && side_b.count >= 3
-                                             ? acrossDirection(side_a, side_b)
-                                             : Eigen::Vector3d::Zero();
-            if (across.isZero() ||
-                !walkedCreaseLine(index, points, labels, pair, at, across, radius,
-                                  min_sine, min_crease_angle, line, offset))
-              break;
-          }
+          if (!contactLine(index, points, labels, pair, at, side_a, side_b, radius,
+                           min_sine, min_crease_angle, line, offset))
+            break;
           Sample sample;
           sample.pair = pair;
           sample.turn = line.turn;

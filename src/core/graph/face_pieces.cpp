@@ -1,34 +1,32 @@
 #include <visfeat/core/graph/face_pieces.h>
 
+#include "region_boundaries.h"
+
 #include <algorithm>
+#include <iterator>
 #include <map>
 
 namespace visfeat {
 
+using detail::classOfLabel;
+
 namespace {
 
-/** The class of region `label` (classes[label - 1]; kNone for 0 or past the end). */
-FeatureClass
-classOfLabel(const std::vector<FeatureClass>& classes, std::uint32_t label)
-{
-  return label == 0 || label > classes.size() ? FeatureClass::kNone
-                                              : classes[label - 1];
-}
-
-/** The 6-connected pieces of face `face` (ascending ids each; in order of their first
- * cell). */
+/** The 6-connected pieces of face `face`, whose cells are `cells` (ascending ids each;
+ * in order of their first cell). */
 std::vector<std::vector<CellId>>
 facePieces(const VoxelBand& band,
            const std::vector<std::uint32_t>& cell_labels,
            std::uint32_t face,
+           const std::vector<CellId>& cells,
            std::vector<char>& seen)
 {
   std::vector<std::vector<CellId>> pieces;
-  for (std::size_t c = 0; c < cell_labels.size(); ++c) {
-    if (cell_labels[c] != face || seen[c])
+  for (const CellId seed : cells) {
+    if (seen[static_cast<std::size_t>(seed)])
       continue;
-    std::vector<CellId> piece{static_cast<CellId>(c)};
-    seen[c] = 1;
+    std::vector<CellId> piece{seed};
+    seen[static_cast<std::size_t>(seed)] = 1;
     for (std::size_t i = 0; i < piece.size(); ++i)
       for (const CellId m : band.neighbours(piece[i])) {
         if (m == kNoCell)
@@ -42,9 +40,8 @@ facePieces(const VoxelBand& band,
     std::sort(piece.begin(), piece.end());
     pieces.push_back(std::move(piece));
   }
-  for (const auto& piece : pieces)
-    for (const CellId c : piece)
-      seen[static_cast<std::size_t>(c)] = 0;
+  for (const CellId c : cells)
+    seen[static_cast<std::size_t>(c)] = 0;
   return pieces;
 }
 
@@ -56,6 +53,20 @@ cutOffFacePieces(const VoxelBand& band,
                  const std::vector<FeatureClass>& classes,
                  const std::vector<std::array<std::uint32_t, 2>>& pairs)
 {
+  // the cells of the pairs' faces, gathered in one pass (ascending ids)
+  std::map<std::uint32_t, std::vector<CellId>> cells_of;
+  for (const auto& pair : pairs)
+    if (classOfLabel(classes, pair[0]) == FeatureClass::kFace &&
+        classOfLabel(classes, pair[1]) == FeatureClass::kFace)
+      for (const std::uint32_t face : pair)
+        cells_of[face];
+  if (cells_of.empty())
+    return {};
+  for (std::size_t c = 0; c < cell_labels.size(); ++c) {
+    const auto it = cells_of.find(cell_labels[c]);
+    if (it != cells_of.end())
+      it->second.push_back(static_cast<CellId>(c));
+  }
   std::vector<FacePiece> found;
   std::vector<char> seen(cell_labels.size(), 0);
   for (const auto& pair : pairs)
@@ -66,7 +77,7 @@ cutOffFacePieces(const VoxelBand& band,
           classOfLabel(classes, other) != FeatureClass::kFace)
         continue;
       std::vector<std::vector<CellId>> pieces =
-        facePieces(band, cell_labels, face, seen);
+        facePieces(band, cell_labels, face, cells_of.at(face), seen);
       if (pieces.size() < 2)
         continue;
       std::size_t largest = 0;
@@ -76,25 +87,14 @@ cutOffFacePieces(const VoxelBand& band,
       for (std::size_t p = 0; p < pieces.size(); ++p) {
         if (p == largest)
           continue;
-        std::map<std::uint32_t, std::size_t> shared;
-        for (const CellId c : pieces[p])
-          for (const CellId m : band.neighbours(c)) {
-            const std::uint32_t l =
-              m == kNoCell ? 0 : cell_labels[static_cast<std::size_t>(m)];
-            if (l != face && classOfLabel(classes, l) == FeatureClass::kFace)
-              ++shared[l];
-          }
-        std::uint32_t most = 0;
-        std::size_t count = 0;
-        bool tie = false;
-        for (const auto& [label, n] : shared) {
-          tie = n == count ? true : n > count ? false : tie;
-          if (n > count) {
-            most = label;
-            count = n;
-          }
-        }
-        if (most == other && !tie)
+        // the faces it borders (not the edges and vertices)
+        std::map<std::uint32_t, std::size_t> shared =
+          detail::sharedBoundary(band, cell_labels, pieces[p], face);
+        for (auto it = shared.begin(); it != shared.end();)
+          it = classOfLabel(classes, it->first) == FeatureClass::kFace
+                 ? std::next(it)
+                 : shared.erase(it);
+        if (detail::soleLargest(shared) == other)
           found.push_back({std::move(pieces[p]), other});
       }
     }

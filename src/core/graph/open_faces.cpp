@@ -1,6 +1,8 @@
 #include <visfeat/core/common/error.h>
 #include <visfeat/core/graph/open_faces.h>
 
+#include "region_boundaries.h"
+
 #include <algorithm>
 #include <iterator>
 #include <map>
@@ -61,36 +63,27 @@ openFaceSources(const TopologyGraph& graph)
   return sources;
 }
 
-/** Per face with several sources, the cells it shares with each (6-neighbour pairs of
- * cells): one pass over the band, looking around the cells of those faces only. */
+/** Per face with several sources, the boundary it shares with each region
+ * (detail::sharedBoundary()); the faces' cells gathered in one pass over the band. */
 std::map<std::uint32_t, std::map<std::uint32_t, std::size_t>>
 sharedBoundaries(const std::vector<std::vector<std::uint32_t>>& sources,
                  const VoxelBand& band,
                  const std::vector<std::uint32_t>& cell_labels)
 {
-  std::map<std::uint32_t, std::map<std::uint32_t, std::size_t>> shared;
-  std::vector<char> wanted(sources.size(), 0);
-  bool any = false;
-  for (std::size_t f = 0; f < sources.size(); ++f)
+  std::map<std::uint32_t, std::vector<CellId>> cells_of;
+  for (std::uint32_t f = 0; f < sources.size(); ++f)
     if (sources[f].size() > 1)
-      wanted[f] = any = true;
-  if (!any)
-    return shared;
-  static const CellCoord kSteps[6] = {{1, 0, 0},  {-1, 0, 0}, {0, 1, 0},
-                                      {0, -1, 0}, {0, 0, 1},  {0, 0, -1}};
+      cells_of[f];
+  if (cells_of.empty())
+    return {};
   for (std::size_t c = 0; c < cell_labels.size(); ++c) {
-    const std::uint32_t f = cell_labels[c];
-    if (f >= wanted.size() || !wanted[f])
-      continue;
-    for (const CellCoord& step : kSteps) {
-      const CellId m = band.find(band.coord(static_cast<CellId>(c)) + step);
-      if (m == kNoCell)
-        continue;
-      const std::uint32_t g = cell_labels[static_cast<std::size_t>(m)];
-      if (g != f && g != 0)
-        ++shared[f][g];
-    }
+    const auto it = cells_of.find(cell_labels[c]);
+    if (it != cells_of.end())
+      it->second.push_back(static_cast<CellId>(c));
   }
+  std::map<std::uint32_t, std::map<std::uint32_t, std::size_t>> shared;
+  for (const auto& [f, cells] : cells_of)
+    shared[f] = detail::sharedBoundary(band, cell_labels, cells, f);
   return shared;
 }
 
@@ -110,20 +103,13 @@ mergeOpenFaces(const TopologyGraph& graph,
       from = sources[f][0];
     } else if (sources[f].size() > 1 && shared.count(f)) {
       // the source it shares the most boundary with, when that one is alone
-      std::size_t most = 0, ties = 0;
+      std::map<std::uint32_t, std::size_t> with_sources;
       for (const std::uint32_t s : sources[f]) {
         const auto it = shared.at(f).find(s);
-        const std::size_t count = it == shared.at(f).end() ? 0 : it->second;
-        if (count > most) {
-          most = count;
-          from = s;
-          ties = 0;
-        } else if (count == most) {
-          ++ties;
-        }
+        if (it != shared.at(f).end())
+          with_sources.insert(*it);
       }
-      if (most == 0 || ties > 0)
-        from = 0;
+      from = detail::soleLargest(with_sources);
     }
     if (from != 0 && graph.node(from).cells > graph.node(f).cells)
       into[f] = from;
