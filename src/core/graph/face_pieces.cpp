@@ -62,11 +62,7 @@ cutOffFacePieces(const VoxelBand& band,
         cells_of[face];
   if (cells_of.empty())
     return {};
-  for (std::size_t c = 0; c < cell_labels.size(); ++c) {
-    const auto it = cells_of.find(cell_labels[c]);
-    if (it != cells_of.end())
-      it->second.push_back(static_cast<CellId>(c));
-  }
+  detail::gatherCells(cell_labels, cells_of);
   std::vector<FacePiece> found;
   std::vector<char> seen(cell_labels.size(), 0);
   for (const auto& pair : pairs)

@@ -76,11 +76,7 @@ sharedBoundaries(const std::vector<std::vector<std::uint32_t>>& sources,
       cells_of[f];
   if (cells_of.empty())
     return {};
-  for (std::size_t c = 0; c < cell_labels.size(); ++c) {
-    const auto it = cells_of.find(cell_labels[c]);
-    if (it != cells_of.end())
-      it->second.push_back(static_cast<CellId>(c));
-  }
+  detail::gatherCells(cell_labels, cells_of);
   std::map<std::uint32_t, std::map<std::uint32_t, std::size_t>> shared;
   for (const auto& [f, cells] : cells_of)
     shared[f] = detail::sharedBoundary(band, cell_labels, cells, f);

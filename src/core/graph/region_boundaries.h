@@ -21,6 +21,19 @@ classOfLabel(const std::vector<FeatureClass>& classes, std::uint32_t label)
                                               : classes[label - 1];
 }
 
+/** Fills each list of `cells_of` (keyed by region label) with that region's cells, in
+ * ascending ids: one pass over the band. */
+inline void
+gatherCells(const std::vector<std::uint32_t>& cell_labels,
+            std::map<std::uint32_t, std::vector<CellId>>& cells_of)
+{
+  for (std::size_t c = 0; c < cell_labels.size(); ++c) {
+    const auto it = cells_of.find(cell_labels[c]);
+    if (it != cells_of.end())
+      it->second.push_back(static_cast<CellId>(c));
+  }
+}
+
 /** Per region label other than `own` and 0, the 6-neighbour pairs of band cells between
  * `cells` and that region's cells (the boundary they share). */
 inline std::map<std::uint32_t, std::size_t>
