@@ -172,8 +172,11 @@ cadCounts(const std::string& name, std::uint64_t rotation, double min_angle)
 // across contacts and edges: the chamfered box lost 2 of 4 corners and 3 edges at
 // rotation 1, the creases 2 edges and a face on all three rotations). With the rule
 // the faces that still touch across a sharp turn also get an edge on it (contact
-// creases): no vertex or face is lost, and edges may only be added (measured: 12 -> 13
-// of the chamfered box's 24, 14 -> 15 of the creases' 21).
+// creases), and a face whose own points turn is split there (creasedFacePieces()): no
+// vertex, edge or face is lost, and none is added beyond the model's own (measured
+// 2026-12-07 at rotation 1, rule against off: the chamfered box 8 vertices and 9 faces
+// against 5 and 8, truth 16/24/10; the creases 11 and 9 against 8 and 7, truth
+// 14/21/9; before the face split the rule added edges only).
 TEST(BlendModelsWithTheRule, CreasesCloserThanTheSeparationAreKept)
 {
   // rotation 1: where both merged wrongly (40 s for all three rotations on 2 loaded
@@ -181,9 +184,13 @@ TEST(BlendModelsWithTheRule, CreasesCloserThanTheSeparationAreKept)
   for (const char* name : {"chamfered_box", "parallel_creases"}) {
     const std::array<std::size_t, 4> rule = cadCounts(name, 1, 20.0);
     const std::array<std::size_t, 4> off = cadCounts(name, 1, 0.0);
-    EXPECT_EQ(rule[1], off[1]) << name << ": vertices";
-    EXPECT_GE(rule[2], off[2]) << name << ": edges";
-    EXPECT_EQ(rule[3], off[3]) << name << ": faces";
+    const syn::CadModel truth = syn::cadModelByName(name);
+    const std::array<std::size_t, 4> most{
+      {0, truth.vertices.size(), truth.curves.size(), truth.faces.size()}};
+    for (const std::size_t c : {1u, 2u, 3u}) {
+      EXPECT_GE(rule[c], off[c]) << name << ": class " << c;
+      EXPECT_LE(rule[c], most[c]) << name << ": class " << c;
+    }
   }
 }
 

@@ -3,7 +3,8 @@
 // cells (what the automatic resolution picks for its rotation 1) the graph looked
 // whole, 0/1/2 for 8/14/7, with no warning. Its faces hold the rims' valleys of the
 // visibility map far from any edge, which wide-faced models do not: the search goes
-// finer on them, and a result that keeps them warns. About 30 s on 2 cores: label
+// finer on them, and a result that keeps them warns (the faces' own points now split
+// some of them, and the graph's gaps warn and raise the resolution too). About 30 s on 2 cores: label
 // acceptance.
 
 #include "estimator_fixtures.h"
@@ -95,7 +96,10 @@ TEST(MergedValleys, ThinPlateHoldsThemWideFacesDoNot)
 
 TEST(MergedValleys, ThePlateWarnsWhereTheGraphLooksWhole)
 {
+  // The faces as the map leaves them (the crease rule off: with it, the faces' own
+  // points split them at the rims, creasedFacePieces(), and the graph warns instead)
   Estimator est;
+  est.setMinCreaseAngle(0.0);
   runModel(est, "thin_plate_with_hole", 1, 255);
   const auto& warnings = est.getWarnings();
   EXPECT_TRUE(std::any_of(
@@ -103,16 +107,27 @@ TEST(MergedValleys, ThePlateWarnsWhereTheGraphLooksWhole)
     [](const std::string& w) { return mentions(w, "were merged into faces"); }))
     << "the silent answer of before: " << visfeat_test::estimator::counts(est)[1]
     << " edges";
+  // the defaults: never silent either (measured 2026-12-07: 6/17/8 for 8/14/7, "9 of
+  // 20 edges end at a corner on one side only")
+  Estimator defaults;
+  runModel(defaults, "thin_plate_with_hole", 1, 255);
+  EXPECT_FALSE(defaults.getWarnings().empty());
 }
 
 TEST(MergedValleys, TheSearchGoesFinerOnThem)
 {
   Estimator est;
+  est.setMinCreaseAngle(0.0); // as above: the merged valleys are the reason
   runModel(est, "thin_plate_with_hole", 1, 0);
   const visfeat::ResolutionEstimate& chosen = est.getResolutionEstimate();
   EXPECT_TRUE(mentions(chosen.reason, "(creases merged into faces): raised to"))
     << chosen.reason;
   EXPECT_GE(chosen.resolution, 500) << chosen.reason;
+  // with the defaults the graph's gaps raise it (measured: to 510, then 1020, 8/14/7)
+  Estimator defaults;
+  runModel(defaults, "thin_plate_with_hole", 1, 0);
+  EXPECT_GE(defaults.getResolutionEstimate().resolution, 500)
+    << defaults.getResolutionEstimate().reason;
   // a wide-faced model keeps its resolution
   Estimator cube;
   runModel(cube, "cube", 1, 0);
@@ -174,13 +189,15 @@ TEST(MergedValleys, ShallowParallelCreasesLeaveALine)
   }
   // measured: rotation 23's graph is closed (10/14/7), only the line tells
   EXPECT_GE(line_warnings, 1);
-  // With the defaults the contact creases find some of those creases (measured
-  // 2026-12-07: 9/15/7, 9/15/7, 10/15/7 for 14/21/9; 8/14/7, 8/14/7, 10/14/7 before
-  // they walked across), and a result that is still wrong is never silent.
+  // With the defaults the faces' own points split them at some of those creases and
+  // the contact creases put edges there (measured 2026-12-07: 10/17/8, 10/19/10,
+  // 10/18/9 for 14/21/9; 9/15/7, 9/15/7, 10/15/7 with the contact creases alone), and
+  // a result that is still wrong is never silent.
   for (const std::uint64_t seed : {21u, 22u, 23u}) {
     Estimator est;
     runModel(est, "parallel_creases", seed, 256);
-    EXPECT_GE(visfeat_test::estimator::counts(est)[1], 15u) << "rotation " << seed;
+    EXPECT_GE(visfeat_test::estimator::counts(est)[1], 17u) << "rotation " << seed;
+    EXPECT_GE(visfeat_test::estimator::counts(est)[2], 8u) << "rotation " << seed;
     EXPECT_FALSE(est.getWarnings().empty()) << "rotation " << seed;
   }
 }

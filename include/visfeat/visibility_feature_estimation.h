@@ -464,9 +464,8 @@ private:
                            Run& run,
                            Results results,
                            PointCloudOut& output) const;
-  /** The search stops at run's resolution: the next, `next`, is (or would be) rough
-   * with `noise` cells; says so in run's reason and warnings, and checks results again
-   * with the noise as the search's limit. */
+  /** The search stops: the next resolution `next` is (would be) rough with `noise`
+   * cells; says so in reason and warnings, checks results again with that limit. */
   void keepUnderNoise(const Results& results,
                       Run& run,
                       const std::string& found,
@@ -484,8 +483,7 @@ private:
   /** An automatic points band with holes: true when run's fill changed, to build. */
   bool refillSparseBand(Run& run, const VoxelBand& band) const;
   void checkResults(const Results& results, Run& run) const;
-  /** The warnings on rough points: the band's roughness outside noise mode
-   * (kNoisyRoughness) and the noise the fill measured (kNoisyPointNoise). */
+  /** Warnings on rough points (kNoisyRoughness, kNoisyPointNoise). */
   void checkNoise(const VoxelBand& band, Run& run) const;
   /** A warning where the graph is not that of a closed part (findGraphGaps()). */
   void checkGraph(const Results& results, Run& run) const;
@@ -509,8 +507,7 @@ private:
                          const PointCloudIn& surface,
                          PointCloudOut& output) const;
   void buildGraph(Results& results, const Run& run, const PointCloudOut& output) const;
-  /** Cells, points, graph after FeatureSegmentation::mergeRegions(into); returns its
-   * renumbering (empty: nothing joins). */
+  /** mergeRegions(into) on cells, points, graph; its renumbering (empty: none). */
   std::vector<std::uint32_t>
   applyRegionMerge(Results& results,
                    const Run& run,
@@ -520,9 +517,9 @@ private:
    * leaves (per label - 1). */
   std::vector<CreaseAngle>
   mergeShallowCreases(Results& results, const Run& run, PointCloudOut& output) const;
-  /** After the graph: the crease rule, then the stray regions (strayRegionMerge);
-   * each edge's crease angle into the graph; then the contact creases. */
-  void cleanUpRegions(Results& results, const Run& run, PointCloudOut& output) const;
+  /** After the graph: the crease rule, the stray regions, creased faces split (from
+   * the surface's points: splitCreasedFaces()), then the contact creases. */
+  void cleanUpRegions(Results&, const Run&, const PointCloudIn&, PointCloudOut&) const;
   /** Faces touching across a turn of at least the minimum crease angle, no edge between
    * them, get an edge region along it (locateContactCreases()), and all follows. */
   void addContactCreases(Results& results, const Run& run, PointCloudOut& output) const;

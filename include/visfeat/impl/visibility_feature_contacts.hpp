@@ -6,6 +6,7 @@
 #include <visfeat/core/graph/contact_creases.h>
 #include <visfeat/core/graph/corner_meets.h>
 #include <visfeat/core/graph/edge_bridges.h>
+#include <visfeat/core/graph/face_creases.h>
 #include <visfeat/core/graph/face_pieces.h>
 #include <visfeat/core/graph/open_faces.h>
 #include <visfeat/impl/visibility_feature_estimation.hpp>
@@ -91,6 +92,80 @@ moveCutOffPieces(Results& results,
     label = moved[label];
 }
 
+/** Faces that hold creases the map did not see: the pieces their ridges of
+ * non-planar points cut apart (creasedFacePieces(), from the points of `surface`, the
+ * cloud the band was built from, each taking its cell's label: the same whatever the
+ * input points) become faces, the output's face points with them (cell_of(i): point i's
+ * band cell); then each two pieces of one face that touch join again unless their
+ * contact turns by at least min_angle (measureFaceContacts(); a contact too short to
+ * measure joins too). Returns false when no face was split; else `into` is the join for
+ * applyRegionMerge() (identity when every contact is a crease) and `renumbered` the
+ * split's renumbering (per label before, its label after). */
+template <typename Results, typename Surface, typename Cloud, typename CellOf>
+bool
+splitCreasedFaces(Results& results,
+                  const Surface& surface,
+                  Cloud& output,
+                  const FaceCreaseParameters& parameters,
+                  double window_cells,
+                  double min_angle,
+                  const CellOf& cell_of,
+                  std::vector<std::uint32_t>& into,
+                  std::vector<std::uint32_t>& renumbered)
+{
+  std::vector<Eigen::Vector3d> ground(surface.size());
+  for (std::size_t j = 0; j < surface.size(); ++j)
+    ground[j] = surface[j].getVector3fMap().template cast<double>();
+  std::vector<CellId> point_cells = results.band.pointCell();
+  point_cells.resize(ground.size(), kNoCell);
+  const std::vector<CreasedFacePiece> pieces =
+    creasedFacePieces(results.band, results.segmentation.cellLabels(), ground,
+                      point_cells, results.segmentation.regionClasses(), parameters);
+  if (pieces.empty())
+    return false;
+  std::vector<Eigen::Vector3d> points(output.size());
+  std::vector<std::uint32_t> labels(output.size());
+  for (std::size_t i = 0; i < output.size(); ++i)
+    points[i] = output[i].getVector3fMap().template cast<double>();
+  std::vector<std::vector<CellId>> cells;
+  for (const CreasedFacePiece& piece : pieces)
+    cells.push_back(piece.cells);
+  renumbered = results.segmentation.splitFaces(cells);
+  const std::vector<std::uint32_t>& cell_labels = results.segmentation.cellLabels();
+  const std::vector<Region>& regions = results.segmentation.regions();
+  // per label now, the face it was cut from (its own label for the others)
+  std::vector<std::uint32_t> origin(regions.size() + 1);
+  std::iota(origin.begin(), origin.end(), 0u);
+  for (const CreasedFacePiece& piece : pieces)
+    origin[cell_labels[static_cast<std::size_t>(piece.cells.front())]] =
+      renumbered[piece.face];
+  const auto face = static_cast<std::uint8_t>(FeatureClass::kFace);
+  for (std::size_t i = 0; i < output.size(); ++i) {
+    auto& p = output[i];
+    std::uint32_t label = renumbered[p.label];
+    const CellId cell = cell_of(i);
+    if (p.feature_class == face && cell != kNoCell) {
+      const std::uint32_t now = cell_labels[static_cast<std::size_t>(cell)];
+      if (origin[now] == label)
+        label = now;
+    }
+    p.label = label;
+    p.feature_class = static_cast<std::uint8_t>(
+      label == 0 ? FeatureClass::kNone : regions[label - 1].feature_class);
+    labels[i] = label;
+  }
+  // the contacts that are creases keep their pieces apart
+  std::set<std::array<std::uint32_t, 2>> creases;
+  for (const CreaseAngle& contact : measureFaceContacts(
+         results.band, cell_labels, points, labels,
+         results.segmentation.regionClasses(), window_cells, parameters.threads))
+    if (contact.degrees >= min_angle)
+      creases.insert(contact.faces);
+  into = rejoinCreasedFacePieces(results.band, cell_labels, origin, creases);
+
+  return true;
+}
+
 } // namespace detail
 
 template <typename PointInT, typename PointOutT>
@@ -127,6 +202,66 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::relabelAddedPoints(
     p.feature_class = static_cast<std::uint8_t>(
       label == 0 ? FeatureClass::kNone : regions[label - 1].feature_class);
   }
+}
+
+template <typename PointInT, typename PointOutT>
+void
+VisibilityFeatureEstimation<PointInT, PointOutT>::cleanUpRegions(
+  Results& results,
+  const Run& run,
+  const PointCloudIn& surface,
+  PointCloudOut& output) const
+{
+  if (run.segmentation.raw || !run.segmentation.complete_regions)
+    return;
+  std::vector<CreaseAngle> angles = mergeShallowCreases(results, run, output);
+  // Stray regions after the crease rule: a face speck that the rule joins to the face
+  // it touches is not one (the faceted boss: a 500-cell facet piece at a corner).
+  const std::vector<std::uint32_t> renumbered = applyRegionMerge(
+    results, run, output,
+    strayRegionMerge(results.graph,
+                     detail::splitCornerDistance(results.band, run.segmentation)));
+  // stray regions join edges, faces or vertices, and an edge joins only a corner (a
+  // piece between a split corner's two parts): each edge that stays keeps its angle
+  // under its new label
+  for (std::size_t r = 0; r < angles.size(); ++r) {
+    const auto label = static_cast<std::uint32_t>(r + 1);
+    const std::uint32_t now = renumbered.empty() ? label : renumbered[label];
+    if (std::isfinite(angles[r].degrees) && now != 0 &&
+        results.graph.node(now).feature_class == FeatureClass::kEdge)
+      results.graph.setCreaseAngle(now, angles[r].degrees);
+  }
+  // faces whose own points hold a crease the map did not see: split, and those whose
+  // contact is a crease stay apart for the contact creases below
+  // not on noisy points: their scatter reads as ridges (the band's roughness), and
+  // noise mode's smoothing rounds every crease, so that faces read ridges along their
+  // edges
+  if (run.crease_angles.min_crease_angle > 0.0 && !(run.smoothing.radius > 0.0) &&
+      results.band.roughness() < FaceCreaseParameters::kMaxRoughness) {
+    FaceCreaseParameters face_creases;
+    face_creases.min_piece_cells = static_cast<std::size_t>(
+      run.segmentation.components.min_radius * run.segmentation.components.min_radius);
+    face_creases.threads = run.visibility.threads;
+    const std::vector<double> angle_of = detail::creaseAnglesOf(results.graph);
+    std::vector<std::uint32_t> into, now;
+    if (detail::splitCreasedFaces(
+          results, surface, output, face_creases, run.crease_angles.window_cells,
+          run.crease_angles.min_crease_angle,
+          [&](std::size_t i) {
+            return bandCellOf(results.band, static_cast<std::size_t>((*indices_)[i]));
+          },
+          into, now)) {
+      const std::vector<std::uint32_t> joined =
+        applyRegionMerge(results, run, output, into);
+      if (joined.empty())
+        buildGraph(results, run, output);
+      else
+        for (std::uint32_t& label : now)
+          label = joined[label];
+      detail::restoreCreaseAngles(results.graph, angle_of, now);
+    }
+  }
+  addContactCreases(results, run, output);
 }
 
 template <typename PointInT, typename PointOutT>

@@ -402,33 +402,6 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::mergeShallowCreases(
 }
 
 template <typename PointInT, typename PointOutT>
-void
-VisibilityFeatureEstimation<PointInT, PointOutT>::cleanUpRegions(
-  Results& results, const Run& run, PointCloudOut& output) const
-{
-  if (run.segmentation.raw || !run.segmentation.complete_regions)
-    return;
-  std::vector<CreaseAngle> angles = mergeShallowCreases(results, run, output);
-  // Stray regions after the crease rule: a face speck that the rule joins to the face
-  // it touches is not one (the faceted boss: a 500-cell facet piece at a corner).
-  const std::vector<std::uint32_t> renumbered = applyRegionMerge(
-    results, run, output,
-    strayRegionMerge(results.graph,
-                     detail::splitCornerDistance(results.band, run.segmentation)));
-  // stray regions join edges, faces or vertices, and an edge joins only a corner (a
-  // piece between a split corner's two parts): each edge that stays keeps its angle
-  // under its new label
-  for (std::size_t r = 0; r < angles.size(); ++r) {
-    const auto label = static_cast<std::uint32_t>(r + 1);
-    const std::uint32_t now = renumbered.empty() ? label : renumbered[label];
-    if (std::isfinite(angles[r].degrees) && now != 0 &&
-        results.graph.node(now).feature_class == FeatureClass::kEdge)
-      results.graph.setCreaseAngle(now, angles[r].degrees);
-  }
-  addContactCreases(results, run, output);
-}
-
-template <typename PointInT, typename PointOutT>
 typename VisibilityFeatureEstimation<PointInT, PointOutT>::Results
 VisibilityFeatureEstimation<PointInT, PointOutT>::computeResults(
   Run& run, PointCloudOut& output) const
@@ -488,7 +461,7 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::computeResults(
 
   start = Clock::now();
   buildGraph(results, run, output);
-  cleanUpRegions(results, run, output);
+  cleanUpRegions(results, run, *surface, output);
   claimCornerPoints(results, run, *surface, output);
   joinSplitCorners(results, run, output);
   placeCornersAtMeets(results, run, output);

@@ -249,4 +249,27 @@ FeatureSegmentation::moveFaceCells(const std::vector<std::vector<CellId>>& cells
   return renumbered;
 }
 
+std::vector<std::uint32_t>
+FeatureSegmentation::splitFaces(const std::vector<std::vector<CellId>>& cells)
+{
+  const std::size_t n = regions_.size();
+  std::vector<FeatureClass> classes(n + cells.size() + 1, FeatureClass::kFace);
+  classes[0] = FeatureClass::kNone;
+  for (std::size_t l = 1; l <= n; ++l)
+    classes[l] = regions_[l - 1].feature_class;
+  for (std::size_t r = 0; r < cells.size(); ++r)
+    for (const CellId c : cells[r]) {
+      if (c < 0 || static_cast<std::size_t>(c) >= labels_.size())
+        throw Error("splitFaces: cell " + std::to_string(c) + " is not one of the " +
+                    std::to_string(labels_.size()) + " band cells");
+      std::uint32_t& label = labels_[static_cast<std::size_t>(c)];
+      if (label != 0 && label <= n && classes[label] == FeatureClass::kFace)
+        label = static_cast<std::uint32_t>(n + 1 + r);
+    }
+  std::vector<std::uint32_t> renumbered =
+    renumberRegions(labels_, classes, cores_.cellLabels(), regions_);
+  renumbered.resize(n + 1);
+  return renumbered;
+}
+
 } // namespace visfeat

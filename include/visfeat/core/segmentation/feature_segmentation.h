@@ -227,6 +227,15 @@ public:
   moveFaceCells(const std::vector<std::vector<CellId>>& cells,
                 const std::vector<std::uint32_t>& faces);
 
+  /** \brief New face regions, one per list of cells, in list order: the listed cells
+   * that belong to a face region take the list's new label (e.g. the pieces of a face
+   * that its ridges of non-planar points cut apart, creasedFacePieces()); other cells
+   * keep theirs. Renumbered as mergeRegions() does.
+   * \return per old label (index 0 unused, 0 -> 0), its new label; the new regions'
+   * labels are those of their cells in cellLabels().
+   * \throws visfeat::Error for a cell id out of range. */
+  std::vector<std::uint32_t> splitFaces(const std::vector<std::vector<CellId>>& cells);
+
 private:
   ComponentSet cores_;
   std::vector<std::uint32_t> labels_;
