@@ -162,7 +162,6 @@ splitCreasedFaces(Results& results,
     if (contact.degrees >= min_angle)
       creases.insert(contact.faces);
   into = rejoinCreasedFacePieces(results.band, cell_labels, origin, creases);
-
   return true;
 }
 
@@ -231,11 +230,10 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::cleanUpRegions(
         results.graph.node(now).feature_class == FeatureClass::kEdge)
       results.graph.setCreaseAngle(now, angles[r].degrees);
   }
-  // faces whose own points hold a crease the map did not see: split, and those whose
-  // contact is a crease stay apart for the contact creases below
-  // not on noisy points: their scatter reads as ridges (the band's roughness), and
-  // noise mode's smoothing rounds every crease, so that faces read ridges along their
-  // edges
+  // Faces whose own points hold a crease the map did not see are split; the pieces
+  // whose contact is a crease stay apart for the contact creases below. Not on noisy
+  // points: their scatter reads as ridges (the band's roughness), and noise mode's
+  // smoothing rounds every crease, so that faces read ridges along all their edges.
   if (run.crease_angles.min_crease_angle > 0.0 && !(run.smoothing.radius > 0.0) &&
       results.band.roughness() < FaceCreaseParameters::kMaxRoughness) {
     FaceCreaseParameters face_creases;
