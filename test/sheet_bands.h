@@ -6,6 +6,7 @@
 
 #include <visfeat/core/band/voxel_band.h>
 #include <visfeat/core/grid/grid_spec.h>
+#include <visfeat/core/segmentation/feature_segmentation.h>
 #include <visfeat/core/visibility/visibility_map.h>
 
 #include <functional>
@@ -83,6 +84,22 @@ paintSheet(const std::vector<std::string>& rows, int max_radius)
                              throw std::invalid_argument("bad picture character");
                            return row[x] - '0';
                          });
+}
+
+/** \brief Raw-mode segmentation (cores only) of a painted sheet whose cores of radius 3
+ * are faces: min_radius 3, no flat-core faces; e.g. two 4 x 4 face cores either side
+ * of a valley column, for the tests of the operations that move face cells. */
+inline visfeat::FeatureSegmentation
+rawFaceCores(const Sheet& sheet)
+{
+  visfeat::SegmentationParameters p;
+  p.raw = true;
+  p.components.min_radius = 3;
+  p.components.vertex_max_cells = 4;
+  p.components.dimensionality = 2.0;
+  p.components.face_min_depth = 2;
+  p.components.flat_core_faces = false;
+  return visfeat::FeatureSegmentation::compute(sheet.band, sheet.map, p);
 }
 
 } // namespace visfeat_test

@@ -182,15 +182,7 @@ TEST(ContactCreases, MovedFaceCellsTakeTheirNewFace)
   // raw mode: two face cores of 4 x 4 cells, a valley column between them
   const auto sheet =
     visfeat_test::paintSheet({"333313333", "333313333", "333313333", "333313333"}, 3);
-  visfeat::SegmentationParameters p;
-  p.raw = true;
-  p.components.min_radius = 3;
-  p.components.vertex_max_cells = 4;
-  p.components.dimensionality = 2.0;
-  p.components.face_min_depth = 2;
-  p.components.flat_core_faces = false;
-  visfeat::FeatureSegmentation seg =
-    visfeat::FeatureSegmentation::compute(sheet.band, sheet.map, p);
+  visfeat::FeatureSegmentation seg = visfeat_test::rawFaceCores(sheet);
   ASSERT_EQ(seg.regions().size(), 2u);
   ASSERT_EQ(seg.regions()[0].feature_class, FeatureClass::kFace);
   ASSERT_EQ(seg.regions()[1].feature_class, FeatureClass::kFace);

@@ -198,15 +198,7 @@ TEST(FaceCreases, SplitFacesGivesEachListANewFace)
   // raw mode: two face cores of 4 x 4 cells, a valley column between them
   const auto sheet =
     visfeat_test::paintSheet({"333313333", "333313333", "333313333", "333313333"}, 3);
-  visfeat::SegmentationParameters p;
-  p.raw = true;
-  p.components.min_radius = 3;
-  p.components.vertex_max_cells = 4;
-  p.components.dimensionality = 2.0;
-  p.components.face_min_depth = 2;
-  p.components.flat_core_faces = false;
-  visfeat::FeatureSegmentation seg =
-    visfeat::FeatureSegmentation::compute(sheet.band, sheet.map, p);
+  visfeat::FeatureSegmentation seg = visfeat_test::rawFaceCores(sheet);
   ASSERT_EQ(seg.regions().size(), 2u);
   // face 2's columns x = 7, 8 a face of their own; the valley cell (4, 0) has none
   std::vector<CellId> piece{sheet.at(4, 0)};
