@@ -219,6 +219,48 @@ TEST(ContactCreases, PairsAnEdgeSeparatesAreLeftAlone)
   EXPECT_EQ(locate(c, {{{1u, 3u}}}).size(), 1u);
 }
 
+TEST(ContactCreases, EachNewEdgeTakesTheTurnOfTheCreaseHoldingMostOfIt)
+{
+  // Faces 1 and 2; crease A (30 degrees) over cells 0-9, crease B (50 degrees) over
+  // cells 8-19: they overlap at 8-9, which went to A's edge (label 3); B's edge (4)
+  // holds 10-19, and a corner (5) took A's first cell. Edge 6 is an old edge.
+  ContactCrease a, b;
+  a.degrees = 30.0;
+  b.degrees = 50.0;
+  for (CellId c = 0; c < 10; ++c)
+    a.cells.push_back(c);
+  for (CellId c = 8; c < 20; ++c)
+    b.cells.push_back(c);
+  std::vector<std::uint32_t> cell_labels(24, 1);
+  for (CellId c = 0; c < 10; ++c)
+    cell_labels[static_cast<std::size_t>(c)] = 3;
+  for (CellId c = 10; c < 20; ++c)
+    cell_labels[static_cast<std::size_t>(c)] = 4;
+  cell_labels[0] = 5;
+  cell_labels[20] = 6;
+  const std::vector<FeatureClass> classes = {
+    FeatureClass::kFace, FeatureClass::kFace,   FeatureClass::kEdge,
+    FeatureClass::kEdge, FeatureClass::kVertex, FeatureClass::kEdge};
+  const std::vector<char> is_new = {0, 0, 0, 1, 1, 1, 0};
+  const std::vector<double> turns =
+    visfeat::contactCreaseTurns({a, b}, cell_labels, classes, is_new);
+  ASSERT_EQ(turns.size(), 7u);
+  EXPECT_EQ(turns[3], 30.0); // A's 9 cells, not B's 2
+  EXPECT_EQ(turns[4], 50.0); // B's first cells lie in A's edge: B still names 4
+  for (const std::size_t other : {0, 1, 2, 5, 6})
+    EXPECT_TRUE(std::isnan(turns[other])) << other;
+  // the creases in the other order: the same
+  const std::vector<double> swapped =
+    visfeat::contactCreaseTurns({b, a}, cell_labels, classes, is_new);
+  EXPECT_EQ(swapped[3], 30.0);
+  EXPECT_EQ(swapped[4], 50.0);
+  EXPECT_THROW(visfeat::contactCreaseTurns({a}, cell_labels, classes, {0, 1}),
+               visfeat::Error);
+  a.cells.push_back(99); // beyond the band
+  EXPECT_THROW(visfeat::contactCreaseTurns({a}, cell_labels, classes, is_new),
+               visfeat::Error);
+}
+
 } // namespace
 
 TEST(ContactCreases, TheSameForAnyThreadCount)

@@ -94,6 +94,42 @@ TEST(CreaseAngles, SideTurnOfTwoHalfPlanes)
     visfeat::sideTurnDegrees({}, {Eigen::Vector3d::Zero()}, Eigen::Vector3d::Zero())));
 }
 
+TEST(CreaseAngles, AnEdgeWiderThanTheWindowIsMeasuredWithAWiderOne)
+{
+  // Edge strips 5 cells to each side of the crease: no window of 4 cells holds both
+  // faces, one of 8 (kWideWindowFactor) does. 9 cells: beyond that too, unmeasured.
+  const double window = visfeat::CreaseAngleParameters::kDefaultWindowCells;
+  ASSERT_EQ(visfeat::CreaseAngleParameters::kWideWindowFactor, 2.0);
+  for (const double turn : {25.0, 60.0, 90.0}) {
+    for (std::uint64_t r = 1; r <= 3; ++r) {
+      const LabelledCloud wide = twoPlanes(turn, syn::randomRotation(60 + r), 0.0, r,
+                                           40.0, 16.0, 30000, window + 1.0);
+      const std::vector<CreaseAngle> angles = visfeat::measureCreaseAngles(
+        wide.points, wide.labels, kFaceEdgeFace, kCell, window);
+      EXPECT_NEAR(angles[1].degrees, turn, 0.05)
+        << "turn " << turn << " rotation " << r;
+      EXPECT_EQ(angles[1].faces, (std::array<std::uint32_t, 2>{{1, 3}}));
+      // a speck of such an edge (fewer than kMinWideEdgePoints) stays unmeasured
+      LabelledCloud speck = wide;
+      std::size_t kept = 0;
+      for (std::uint32_t& label : speck.labels)
+        if (label == 2 && ++kept >= visfeat::CreaseAngleParameters::kMinWideEdgePoints)
+          label = 0;
+      EXPECT_TRUE(
+        std::isnan(visfeat::measureCreaseAngles(speck.points, speck.labels,
+                                                kFaceEdgeFace, kCell, window)[1]
+                     .degrees));
+      const LabelledCloud wider = twoPlanes(turn, syn::randomRotation(60 + r), 0.0, r,
+                                            40.0, 16.0, 30000, 2.0 * window + 1.0);
+      EXPECT_TRUE(
+        std::isnan(visfeat::measureCreaseAngles(wider.points, wider.labels,
+                                                kFaceEdgeFace, kCell, window)[1]
+                     .degrees))
+        << "turn " << turn << " rotation " << r;
+    }
+  }
+}
+
 TEST(CreaseAngles, MeasuredOnLabelledCloudsAtKnownTurns)
 {
   for (const double turn : {10.0, 30.0, 41.81, 90.0, 120.0}) {

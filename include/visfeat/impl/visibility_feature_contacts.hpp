@@ -326,15 +326,12 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::addContactCreases(
     fresh[label] = 0;
   buildGraph(results, run, output);
   detail::restoreCreaseAngles(results.graph, angle_of, renumbered);
-  for (std::size_t k = 0; k < creases.size(); ++k)
-    for (const CellId c : creases[k].cells) { // a corner may hold its first cells
-      const std::uint32_t label = cell_labels[static_cast<std::size_t>(c)];
-      if (label != 0 && fresh[label] &&
-          results.graph.node(label).feature_class == FeatureClass::kEdge) {
-        results.graph.setCreaseAngle(label, creases[k].degrees);
-        break;
-      }
-    }
+  // each new edge the turn of the crease that holds most of its cells
+  const std::vector<double> turns = contactCreaseTurns(
+    creases, cell_labels, results.segmentation.regionClasses(), fresh);
+  for (std::uint32_t label = 1; label < turns.size(); ++label)
+    if (std::isfinite(turns[label]))
+      results.graph.setCreaseAngle(label, turns[label]);
 }
 
 template <typename PointInT, typename PointOutT>

@@ -1,5 +1,6 @@
 #include <visfeat/core/graph/contact_creases.h>
 
+#include <visfeat/core/common/error.h>
 #include <visfeat/core/common/threads.h>
 
 #include "../common/angles.h"
@@ -11,7 +12,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
+#include <string>
 #include <utility>
 
 namespace visfeat {
@@ -529,6 +532,41 @@ contactCorners(const VoxelBand& band,
     }
   }
   return corners;
+}
+
+std::vector<double>
+contactCreaseTurns(const std::vector<ContactCrease>& creases,
+                   const std::vector<std::uint32_t>& cell_labels,
+                   const std::vector<FeatureClass>& classes,
+                   const std::vector<char>& is_new)
+{
+  const std::size_t labels = classes.size() + 1;
+  if (is_new.size() < labels)
+    throw Error("contactCreaseTurns: is_new holds " + std::to_string(is_new.size()) +
+                " labels, the regions " + std::to_string(labels));
+  std::vector<double> turns(labels, std::numeric_limits<double>::quiet_NaN());
+  std::vector<std::size_t> most(labels, 0); // per label, the cells of its crease
+  std::vector<std::size_t> held(labels, 0); // per label, the current crease's cells
+  const auto labelOf = [&](CellId c) {
+    if (static_cast<std::size_t>(c) >= cell_labels.size() ||
+        cell_labels[static_cast<std::size_t>(c)] >= labels)
+      throw Error("contactCreaseTurns: a crease cell beyond the band or the regions");
+    return cell_labels[static_cast<std::size_t>(c)];
+  };
+  for (const ContactCrease& crease : creases) {
+    for (const CellId c : crease.cells)
+      ++held[labelOf(c)];
+    for (const CellId c : crease.cells) {
+      const std::uint32_t label = labelOf(c);
+      if (label != 0 && is_new[label] && classes[label - 1] == FeatureClass::kEdge &&
+          held[label] > most[label]) {
+        most[label] = held[label];
+        turns[label] = crease.degrees;
+      }
+      held[label] = 0; // each label once per crease
+    }
+  }
+  return turns;
 }
 
 } // namespace visfeat

@@ -51,14 +51,17 @@ sideTurnDegrees(const std::vector<Eigen::Vector3d>& side_a,
 
 namespace {
 
-/** measureCreaseAngles() for one edge from its points (indices into points). */
+/** measureCreaseAngles() for one edge from its points (indices into points); each
+ * sample between the sides around its point (measureSampleBetweenSides()) where
+ * between_sides. */
 CreaseAngle
 measureEdge(const FacePointIndex& index,
             const std::vector<Eigen::Vector3d>& points,
             const std::vector<std::uint32_t>& labels,
             const std::vector<std::uint32_t>& mine,
             double radius,
-            double walk_below_degrees)
+            double walk_below_degrees,
+            bool between_sides = false)
 {
   CreaseAngle angle;
   if (mine.empty())
@@ -70,7 +73,10 @@ measureEdge(const FacePointIndex& index,
     // evenly spread: the middle of the s-th of `samples` equal parts
     const std::size_t i = mine[(2 * s + 1) * mine.size() / (2 * samples)];
     const SampleTurn turn =
-      measureSample(index, points, labels, points[i], radius, walk_below_degrees);
+      between_sides
+        ? measureSampleBetweenSides(index, points, labels, points[i], radius,
+                                    walk_below_degrees)
+        : measureSample(index, points, labels, points[i], radius, walk_below_degrees);
     if (std::isfinite(turn.degrees))
       by_pair[turn.faces].push_back(turn.degrees);
   }
@@ -118,6 +124,30 @@ measureEdges(const FacePointIndex& index,
     for (std::size_t r = first; r < last; ++r)
       angles[r] =
         measureEdge(index, points, labels, edge_points[r], radius, walk_below_degrees);
+  });
+  // Edges wider than the window, where most samples measured nothing: again with a
+  // wider one (kWideWindowFactor), each sample between the two sides its window
+  // holds; the measure more samples made stands.
+  std::vector<std::size_t> wide;
+  for (std::size_t r = 0; r < classes.size(); ++r) {
+    const std::size_t taken =
+      std::min(edge_points[r].size(), CreaseAngleParameters::kMaxSamplesPerEdge);
+    if (edge_points[r].size() >= CreaseAngleParameters::kMinWideEdgePoints &&
+        2 * std::size_t(angles[r].samples) < taken)
+      wide.push_back(r);
+  }
+  if (wide.empty())
+    return angles;
+  const double wide_radius = CreaseAngleParameters::kWideWindowFactor * radius;
+  const FacePointIndex wide_index(points, labels, classes, wide_radius);
+  parallelFor(wide.size(), threads, 1, [&](std::size_t first, std::size_t last) {
+    for (std::size_t k = first; k < last; ++k) {
+      const CreaseAngle again =
+        measureEdge(wide_index, points, labels, edge_points[wide[k]], wide_radius,
+                    walk_below_degrees, true);
+      if (again.samples > angles[wide[k]].samples)
+        angles[wide[k]] = again;
+    }
   });
   return angles;
 }

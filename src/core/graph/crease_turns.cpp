@@ -184,22 +184,17 @@ sharpestTurnAlong(const FacePointIndex& index,
   return sharpest;
 }
 
-} // namespace
-
-SampleTurn
-measureSample(const FacePointIndex& index,
-              const std::vector<Eigen::Vector3d>& points,
-              const std::vector<std::uint32_t>& labels,
-              const Eigen::Vector3d& at,
-              double radius,
-              double walk_below_degrees)
+/** The two faces with most points among sides (the smaller label first among equals),
+ * and their counts. */
+void
+mainSides(const std::map<std::uint32_t, PlaneSums>& sides,
+          std::uint32_t& first,
+          std::uint32_t& second,
+          std::size_t& n_first,
+          std::size_t& n_second)
 {
-  std::map<std::uint32_t, PlaneSums> sides;
-  index.forEachWithin(at, radius,
-                      [&](std::uint32_t i) { sides[labels[i]].add(points[i] - at); });
-  // The two faces with most points (the smaller label first among equals).
-  std::uint32_t first = 0, second = 0;
-  std::size_t n_first = 0, n_second = 0;
+  first = second = 0;
+  n_first = n_second = 0;
   for (const auto& [label, sums] : sides) {
     if (sums.count > n_first) {
       second = first;
@@ -211,6 +206,37 @@ measureSample(const FacePointIndex& index,
       n_second = sums.count;
     }
   }
+}
+
+/** Per face label, the sums of its points within radius of at (relative to at). */
+std::map<std::uint32_t, PlaneSums>
+sidesAround(const FacePointIndex& index,
+            const std::vector<Eigen::Vector3d>& points,
+            const std::vector<std::uint32_t>& labels,
+            const Eigen::Vector3d& at,
+            double radius)
+{
+  std::map<std::uint32_t, PlaneSums> sides;
+  index.forEachWithin(at, radius,
+                      [&](std::uint32_t i) { sides[labels[i]].add(points[i] - at); });
+  return sides;
+}
+
+} // namespace
+
+SampleTurn
+measureSample(const FacePointIndex& index,
+              const std::vector<Eigen::Vector3d>& points,
+              const std::vector<std::uint32_t>& labels,
+              const Eigen::Vector3d& at,
+              double radius,
+              double walk_below_degrees)
+{
+  std::map<std::uint32_t, PlaneSums> sides =
+    sidesAround(index, points, labels, at, radius);
+  std::uint32_t first = 0, second = 0;
+  std::size_t n_first = 0, n_second = 0;
+  mainSides(sides, first, second, n_first, n_second);
   SampleTurn turn;
   if (n_second < CreaseAngleParameters::kMinSidePoints)
     return turn;
@@ -232,6 +258,26 @@ measureSample(const FacePointIndex& index,
       std::max(turn.degrees, sharpestTurnAlong(index, points, labels, at, way * across,
                                                radius, pair, n_first + n_second));
   return turn;
+}
+
+SampleTurn
+measureSampleBetweenSides(const FacePointIndex& index,
+                          const std::vector<Eigen::Vector3d>& points,
+                          const std::vector<std::uint32_t>& labels,
+                          const Eigen::Vector3d& at,
+                          double radius,
+                          double walk_below_degrees)
+{
+  const std::map<std::uint32_t, PlaneSums> sides =
+    sidesAround(index, points, labels, at, radius);
+  std::uint32_t first = 0, second = 0;
+  std::size_t n_first = 0, n_second = 0;
+  mainSides(sides, first, second, n_first, n_second);
+  if (n_second < CreaseAngleParameters::kMinSidePoints)
+    return SampleTurn{};
+  const Eigen::Vector3d middle =
+    at + 0.5 * (sides.at(first).mean() + sides.at(second).mean());
+  return measureSample(index, points, labels, middle, radius, walk_below_degrees);
 }
 
 double

@@ -34,6 +34,18 @@ SampleTurn measureSample(const FacePointIndex& index,
                          double radius,
                          double walk_below_degrees);
 
+/** measureSample() at the middle between the centroids of the two faces with most
+ * points within radius of `at` (each needs kMinSidePoints; else NaN): a sample point
+ * of an edge region wider than the window lies beside the crease, its window holding
+ * its own side around it and a sliver of the other (a 27.7-degree crease read 166
+ * degrees there). */
+SampleTurn measureSampleBetweenSides(const FacePointIndex& index,
+                                     const std::vector<Eigen::Vector3d>& points,
+                                     const std::vector<std::uint32_t>& labels,
+                                     const Eigen::Vector3d& at,
+                                     double radius,
+                                     double walk_below_degrees);
+
 /** The turn at `at` (degrees) across the contact of the two faces of `pair`, from their
  * points within radius split by geometry, not by label: the labels give only the
  * direction across (from one face's centroid to the other's, in the plane of both); the

@@ -59,6 +59,22 @@ struct CreaseAngleParameters
   static constexpr double kDefaultWindowCells = 4.0;
   /** \brief Fewer face points than this on one side of a sample: no measure there. */
   static constexpr std::size_t kMinSidePoints = 10;
+  /** \brief An edge of at least kMinWideEdgePoints points that no sample measured (its
+   * points reach farther than the window to each side, so no window holds two faces)
+   * is measured again with a window this many times wider. Measured on a 13-sided
+   * prism (27.7-degree creases) at 256 sampled at a point spacing of 1.1 cells: 6 of
+   * its 39 edges had no measure, their windows holding 35-67 points of the edge and
+   * one face; within twice the window each held 40-100 points of both faces. A 7th
+   * read 166 degrees from the one sample of 48 that saw two faces: an edge whose
+   * samples mostly measured nothing is measured again too. */
+  static constexpr double kWideWindowFactor = 2.0;
+  /** \brief Only edges of at least this many points are measured with the wide
+   * window (kWideWindowFactor): a speck of edge on a blend reads its bend steeper in
+   * it (the filleted box at 256, rotation 3: a 12-point edge on a 12-cell fillet, not
+   * measured in the window, read 23 degrees in the wide one and stayed an edge), and
+   * specks stay unmeasured for the rules that join them (strayRegionMerge(),
+   * cornerSpurMerge()). The prism's unmeasured edges held 1,000-1,400 points. */
+  static constexpr std::size_t kMinWideEdgePoints = 48;
   /** \brief At most this many sample points per edge, spread evenly over its points
    * (in index order); the edge's turn is the median over them. */
   static constexpr std::size_t kMaxSamplesPerEdge = 48;
@@ -131,7 +147,10 @@ double sideTurnDegrees(const std::vector<Eigen::Vector3d>& side_a,
  * sample's turn is the sharpest so measured walking kContactScanWindows windows to
  * both sides across (a chamfer narrower than the separation reads shallow at its
  * middle). The estimator passes its minimum crease angle: the walk only raises a turn,
- * so it matters only below it.
+ * so it matters only below it. An edge of at least kMinWideEdgePoints points whose
+ * samples mostly measured nothing (its region wider than the window) is measured
+ * again with a window kWideWindowFactor times wider, each sample at the middle of the
+ * two sides around its point; the measure more samples made stands.
  * Edges are measured on up to `threads` threads (0 = all available); the result is
  * the same for any count. */
 std::vector<CreaseAngle> measureCreaseAngles(const std::vector<Eigen::Vector3d>& points,
