@@ -184,42 +184,38 @@ sharpestTurnAlong(const FacePointIndex& index,
   return sharpest;
 }
 
-/** The two faces with most points among sides (the smaller label first among equals),
- * and their counts. */
-void
-mainSides(const std::map<std::uint32_t, PlaneSums>& sides,
-          std::uint32_t& first,
-          std::uint32_t& second,
-          std::size_t& n_first,
-          std::size_t& n_second)
-{
-  first = second = 0;
-  n_first = n_second = 0;
-  for (const auto& [label, sums] : sides) {
-    if (sums.count > n_first) {
-      second = first;
-      n_second = n_first;
-      first = label;
-      n_first = sums.count;
-    } else if (sums.count > n_second) {
-      second = label;
-      n_second = sums.count;
-    }
-  }
-}
-
-/** Per face label, the sums of its points within radius of at (relative to at). */
-std::map<std::uint32_t, PlaneSums>
-sidesAround(const FacePointIndex& index,
-            const std::vector<Eigen::Vector3d>& points,
-            const std::vector<std::uint32_t>& labels,
-            const Eigen::Vector3d& at,
-            double radius)
+/** The face points within radius of a point, per face label (sums relative to the
+ * point), and the two faces with most of them (the smaller label first among equals)
+ * with their counts. */
+struct MainSides
 {
   std::map<std::uint32_t, PlaneSums> sides;
-  index.forEachWithin(at, radius,
-                      [&](std::uint32_t i) { sides[labels[i]].add(points[i] - at); });
-  return sides;
+  std::uint32_t first = 0, second = 0;
+  std::size_t n_first = 0, n_second = 0;
+};
+
+MainSides
+mainSidesAround(const FacePointIndex& index,
+                const std::vector<Eigen::Vector3d>& points,
+                const std::vector<std::uint32_t>& labels,
+                const Eigen::Vector3d& at,
+                double radius)
+{
+  MainSides main;
+  index.forEachWithin(
+    at, radius, [&](std::uint32_t i) { main.sides[labels[i]].add(points[i] - at); });
+  for (const auto& [label, sums] : main.sides) {
+    if (sums.count > main.n_first) {
+      main.second = main.first;
+      main.n_second = main.n_first;
+      main.first = label;
+      main.n_first = sums.count;
+    } else if (sums.count > main.n_second) {
+      main.second = label;
+      main.n_second = sums.count;
+    }
+  }
+  return main;
 }
 
 } // namespace
@@ -232,11 +228,10 @@ measureSample(const FacePointIndex& index,
               double radius,
               double walk_below_degrees)
 {
-  std::map<std::uint32_t, PlaneSums> sides =
-    sidesAround(index, points, labels, at, radius);
-  std::uint32_t first = 0, second = 0;
-  std::size_t n_first = 0, n_second = 0;
-  mainSides(sides, first, second, n_first, n_second);
+  MainSides main = mainSidesAround(index, points, labels, at, radius);
+  auto& sides = main.sides;
+  const std::uint32_t first = main.first, second = main.second;
+  const std::size_t n_first = main.n_first, n_second = main.n_second;
   SampleTurn turn;
   if (n_second < CreaseAngleParameters::kMinSidePoints)
     return turn;
@@ -268,15 +263,11 @@ measureSampleBetweenSides(const FacePointIndex& index,
                           double radius,
                           double walk_below_degrees)
 {
-  const std::map<std::uint32_t, PlaneSums> sides =
-    sidesAround(index, points, labels, at, radius);
-  std::uint32_t first = 0, second = 0;
-  std::size_t n_first = 0, n_second = 0;
-  mainSides(sides, first, second, n_first, n_second);
-  if (n_second < CreaseAngleParameters::kMinSidePoints)
+  const MainSides main = mainSidesAround(index, points, labels, at, radius);
+  if (main.n_second < CreaseAngleParameters::kMinSidePoints)
     return SampleTurn{};
   const Eigen::Vector3d middle =
-    at + 0.5 * (sides.at(first).mean() + sides.at(second).mean());
+    at + 0.5 * (main.sides.at(main.first).mean() + main.sides.at(main.second).mean());
   return measureSample(index, points, labels, middle, radius, walk_below_degrees);
 }
 
