@@ -130,6 +130,46 @@ TEST(CreaseAngles, AnEdgeWiderThanTheWindowIsMeasuredWithAWiderOne)
   }
 }
 
+TEST(CreaseAngles, ACreaseWithOneFaceOnBothSidesIsMeasuredByGeometry)
+{
+  // The two planes' sides as one face (label 1): measureCreaseAngles() finds no two
+  // faces, measureFadingCreases() splits the face's points across the edge's line.
+  for (const double turn : {0.0, 15.0, 30.0, 90.0, 120.0}) {
+    for (std::uint64_t r = 1; r <= 3; ++r) {
+      LabelledCloud cloud = twoPlanes(turn, syn::randomRotation(80 + r), 0.0, r);
+      for (std::uint32_t& label : cloud.labels)
+        if (label == 3)
+          label = 1;
+      const double window = visfeat::CreaseAngleParameters::kDefaultWindowCells;
+      EXPECT_TRUE(
+        std::isnan(visfeat::measureCreaseAngles(cloud.points, cloud.labels,
+                                                kFaceEdgeFace, kCell, window)[1]
+                     .degrees));
+      const std::vector<CreaseAngle> angles = visfeat::measureFadingCreases(
+        cloud.points, cloud.labels, kFaceEdgeFace, {2}, kCell, window, 2);
+      ASSERT_EQ(angles.size(), 3u);
+      EXPECT_NEAR(angles[1].degrees, turn, 0.05)
+        << "turn " << turn << " rotation " << r;
+      EXPECT_EQ(angles[1].faces, (std::array<std::uint32_t, 2>{{1, 1}}));
+      EXPECT_GT(angles[1].samples, 0u);
+      EXPECT_TRUE(std::isnan(angles[0].degrees));
+      EXPECT_TRUE(std::isnan(angles[2].degrees));
+      // an edge not asked for, or no edge, is not measured
+      EXPECT_TRUE(
+        std::isnan(visfeat::measureFadingCreases(cloud.points, cloud.labels,
+                                                 kFaceEdgeFace, {}, kCell, window)[1]
+                     .degrees));
+    }
+  }
+  const LabelledCloud cloud = twoPlanes(30.0, syn::randomRotation(80), 0.0, 1);
+  EXPECT_THROW(visfeat::measureFadingCreases(cloud.points, cloud.labels, kFaceEdgeFace,
+                                             {1}, kCell, 4.0),
+               visfeat::Error); // a face
+  EXPECT_THROW(visfeat::measureFadingCreases(cloud.points, cloud.labels, kFaceEdgeFace,
+                                             {4}, kCell, 4.0),
+               visfeat::Error); // no region
+}
+
 TEST(CreaseAngles, MeasuredOnLabelledCloudsAtKnownTurns)
 {
   for (const double turn : {10.0, 30.0, 41.81, 90.0, 120.0}) {

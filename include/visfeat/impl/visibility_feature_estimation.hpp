@@ -38,6 +38,39 @@ splitCornerDistance(const VoxelBand& band, const SegmentationParameters& segment
   return 2.0 * segmentation.vertex_reach * band.grid().cell_size;
 }
 
+/** \brief GraphNode::crease_angle of each edge still without one that has one face on
+ * both sides (a crease fading into it), from the output's points and labels
+ * (measureFadingCreases(); for the graph only, after the clean-up). */
+template <typename Cloud>
+void
+setFadingCreaseTurns(TopologyGraph& graph,
+                     const std::vector<FeatureClass>& classes,
+                     const Cloud& output,
+                     double cell_size,
+                     const CreaseAngleParameters& parameters,
+                     int threads)
+{
+  std::vector<std::uint32_t> edges;
+  for (std::uint32_t id = 1; id <= graph.size() && id <= classes.size(); ++id)
+    if (graph.node(id).feature_class == FeatureClass::kEdge &&
+        !std::isfinite(graph.node(id).crease_angle) &&
+        graph.facesOfEdge(id).size() == 1)
+      edges.push_back(id);
+  if (edges.empty())
+    return;
+  std::vector<Eigen::Vector3d> points(output.size());
+  std::vector<std::uint32_t> labels(output.size());
+  for (std::size_t i = 0; i < output.size(); ++i) {
+    points[i] = output[i].getVector3fMap().template cast<double>();
+    labels[i] = output[i].label;
+  }
+  const std::vector<CreaseAngle> angles = measureFadingCreases(
+    points, labels, classes, edges, cell_size, parameters.window_cells, threads);
+  for (const std::uint32_t e : edges)
+    if (std::isfinite(angles[e - 1].degrees))
+      graph.setCreaseAngle(e, angles[e - 1].degrees);
+}
+
 /** \brief A message on one line (newlines of foreign exceptions become spaces). */
 inline std::string
 oneLine(std::string message)
@@ -467,6 +500,10 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::computeResults(
   placeCornersAtMeets(results, run, output);
   bridgeEdgesToCorners(results, run, output);
   moveFlatFeaturePoints(results, run, *surface, output);
+  if (!run.segmentation.raw && run.segmentation.complete_regions)
+    detail::setFadingCreaseTurns(results.graph, results.segmentation.regionClasses(),
+                                 output, results.band.grid().cell_size,
+                                 run.crease_angles, run.visibility.threads);
   run.times.graph_ms = detail::millisecondsSince(start);
   run.warnings_before_checks = run.warnings;
   checkResults(results, run);

@@ -5,6 +5,7 @@
 #include <visfeat/core/graph/crease_angles.h>
 
 #include <visfeat/core/band/voxel_band.h>
+#include <visfeat/core/common/error.h>
 #include <visfeat/core/common/threads.h>
 
 #include "crease_turns.h"
@@ -14,8 +15,10 @@
 #include <algorithm>
 #include <cmath>
 #include <iterator>
+#include <limits>
 #include <map>
 #include <optional>
+#include <string>
 
 namespace visfeat {
 
@@ -33,6 +36,8 @@ using detail::measureSample;
 using detail::median;
 using detail::PlaneSums;
 using detail::SampleTurn;
+using detail::splitAcross;
+using detail::turnOfHalves;
 
 } // namespace
 
@@ -169,6 +174,113 @@ measureCreaseAngles(const std::vector<Eigen::Vector3d>& points,
   const FacePointIndex index(points, labels, classes, radius);
   return measureEdges(index, points, labels, classes, radius, walk_below_degrees,
                       threads);
+}
+
+namespace {
+
+/** measureFadingCreases() at the sample point `at` of edge `edge`: NaN where the
+ * edge's points or a side are too few. */
+double
+fadingSampleTurn(const FacePointIndex& faces,
+                 const FacePointIndex& features,
+                 const std::vector<Eigen::Vector3d>& points,
+                 const std::vector<std::uint32_t>& labels,
+                 std::uint32_t edge,
+                 const Eigen::Vector3d& at,
+                 double radius,
+                 std::uint32_t& face)
+{
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  PlaneSums line_points;
+  features.forEachWithin(at, radius, [&](std::uint32_t i) {
+    if (labels[i] == edge)
+      line_points.add(points[i] - at);
+  });
+  if (line_points.count < 3)
+    return nan;
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(line_points.covariance());
+  const Eigen::Vector3d line = solver.eigenvectors().col(2); // the principal axis
+  std::map<std::uint32_t, std::vector<Eigen::Vector3d>> around;
+  faces.forEachWithin(
+    at, radius, [&](std::uint32_t i) { around[labels[i]].push_back(points[i] - at); });
+  const std::vector<Eigen::Vector3d>* local = nullptr;
+  for (const auto& [label, list] : around)
+    if (local == nullptr || list.size() > local->size()) {
+      local = &list;
+      face = label;
+    }
+  if (local == nullptr || local->size() < 2 * CreaseAngleParameters::kMinSidePoints)
+    return nan;
+  PlaneSums all;
+  for (const Eigen::Vector3d& p : *local)
+    all.add(p);
+  const Eigen::Vector3d across = all.normal().cross(line);
+  if (!(across.norm() > 0.0))
+    return nan;
+  PlaneSums before, after;
+  splitAcross(*local, Eigen::Vector3d::Zero(), across.normalized(), before, after);
+  if (before.count < CreaseAngleParameters::kMinSidePoints ||
+      after.count < CreaseAngleParameters::kMinSidePoints)
+    return nan;
+  return turnOfHalves(before, after, line);
+}
+
+} // namespace
+
+std::vector<CreaseAngle>
+measureFadingCreases(const std::vector<Eigen::Vector3d>& points,
+                     const std::vector<std::uint32_t>& labels,
+                     const std::vector<FeatureClass>& classes,
+                     const std::vector<std::uint32_t>& edges,
+                     double cell_size,
+                     double window_cells,
+                     int threads)
+{
+  std::vector<CreaseAngle> angles(classes.size());
+  const double radius = window_cells * cell_size;
+  if (edges.empty() || !(radius > 0.0) || points.size() != labels.size())
+    return angles;
+  std::vector<std::vector<std::uint32_t>> edge_points(classes.size());
+  for (const std::uint32_t e : edges)
+    if (e == 0 || e > classes.size() || classes[e - 1] != FeatureClass::kEdge)
+      throw Error("measureFadingCreases: label " + std::to_string(e) +
+                  " is not an edge region");
+  std::vector<char> wanted(classes.size() + 1, 0);
+  for (const std::uint32_t e : edges)
+    wanted[e] = 1;
+  for (std::size_t i = 0; i < points.size(); ++i)
+    if (labels[i] <= classes.size() && wanted[labels[i]] && points[i].allFinite())
+      edge_points[labels[i] - 1].push_back(static_cast<std::uint32_t>(i));
+  const FacePointIndex faces(points, labels, classes, radius);
+  const FacePointIndex features(points, labels, classes, radius, false);
+  parallelFor(edges.size(), threads, 1, [&](std::size_t first, std::size_t last) {
+    for (std::size_t k = first; k < last; ++k) {
+      const std::uint32_t e = edges[k];
+      const std::vector<std::uint32_t>& mine = edge_points[e - 1];
+      const std::size_t samples =
+        std::min(mine.size(), CreaseAngleParameters::kMaxSamplesPerEdge);
+      std::map<std::uint32_t, std::vector<double>> by_face;
+      for (std::size_t s = 0; s < samples; ++s) {
+        const std::size_t i = mine[(2 * s + 1) * mine.size() / (2 * samples)];
+        std::uint32_t face = 0;
+        const double turn =
+          fadingSampleTurn(faces, features, points, labels, e, points[i], radius, face);
+        if (std::isfinite(turn))
+          by_face[face].push_back(turn);
+      }
+      std::vector<double>* best = nullptr; // the face most samples saw
+      for (auto& [face, turns] : by_face)
+        if (best == nullptr || turns.size() > best->size()) {
+          best = &turns;
+          angles[e - 1].faces = {{face, face}};
+        }
+      if (best != nullptr) {
+        angles[e - 1].samples = static_cast<std::uint32_t>(best->size());
+        angles[e - 1].degrees = median(*best);
+      }
+    }
+  });
+  return angles;
 }
 
 namespace {

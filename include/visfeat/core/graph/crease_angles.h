@@ -161,6 +161,30 @@ std::vector<CreaseAngle> measureCreaseAngles(const std::vector<Eigen::Vector3d>&
                                              double walk_below_degrees = 180.0,
                                              int threads = 1);
 
+/** \brief The turn of edges with one face on both sides (a crease fading into a face:
+ * measureCreaseAngles() finds no two faces around them), measured by geometry.
+ *
+ * At up to kMaxSamplesPerEdge points of each edge of `edges` (labels of edge
+ * regions), the edge's own points within the window give its line (their principal
+ * axis; at least 3), the face with most points there gives the surface's normal (its
+ * least-squares plane); those face points, split by the plane through the sample
+ * point along the line and the normal, are the two sides, and the turn is that
+ * between their planes across the line (at least kMinSidePoints a side). The edge's
+ * turn is the median over its samples; CreaseAngle::faces is that face twice. For the
+ * graph only: the median of a crease that fades is not a criterion, and the estimator
+ * measures these edges after the clean-up (GraphNode::crease_angle). points, labels,
+ * classes, cell_size, window_cells and threads as measureCreaseAngles().
+ * \return per region (index label - 1, size classes.size()), NaN but for the edges
+ *         measured. */
+std::vector<CreaseAngle>
+measureFadingCreases(const std::vector<Eigen::Vector3d>& points,
+                     const std::vector<std::uint32_t>& labels,
+                     const std::vector<FeatureClass>& classes,
+                     const std::vector<std::uint32_t>& edges,
+                     double cell_size,
+                     double window_cells,
+                     int threads = 1);
+
 /** \brief The turn where two face regions touch with no edge region between them
  * (their cells are 6-neighbours): the watershed splits a smooth blend (a fillet, a
  * tessellated cylinder) between faces without a crease core on it.
