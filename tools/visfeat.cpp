@@ -285,10 +285,10 @@ printSummary(const Estimator& estimator, const vt::Options& opt)
   }
   print_info("Band from ");
   print_value("%s", visfeat::surfaceFillName(estimator.getSurfaceFillUsed()));
-  // the choice of -fill auto, which -fill overrides; a fill set by -fill says so
+  // the choice of -fill auto, which -fill F replaces; a fill set by -fill says so
   const bool chosen = estimator.getSurfaceFill() == visfeat::SurfaceFill::kAuto;
   print_info(": %s%s\n", vt::inToolTerms(estimator.getSurfaceFillReason()).c_str(),
-             chosen ? "; -fill overrides" : "");
+             chosen ? " (chosen by -fill auto; -fill F sets another)" : "");
   for (const std::string& note : estimator.getNotes())
     print_info("Note: %s\n", vt::inToolTerms(note).c_str());
   print_info("Grid: origin (");
@@ -380,10 +380,9 @@ run(int argc, char** argv)
   if (opt.quiet)
     vt::beQuiet();
   else
-    print_info(
-      "Estimate visibility features of a point cloud. For more information, use: %s "
-      "-h\n",
-      argv[0]);
+    print_info("Estimate visibility features of a point cloud or mesh. For more "
+               "information, use: %s -h\n",
+               argv[0]);
 
   std::string error;
   if (!vt::readOptions(args, opt, error))
