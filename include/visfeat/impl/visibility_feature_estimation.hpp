@@ -38,9 +38,41 @@ splitCornerDistance(const VoxelBand& band, const SegmentationParameters& segment
   return 2.0 * segmentation.vertex_reach * band.grid().cell_size;
 }
 
+/** \brief Into angles (per region, measureCreaseAngles()), the turn of each edge of at
+ * least kMinWideEdgePoints points without one that has one face on both sides (a
+ * crease fading into it; measureFadingCreases()), so that the minimum crease angle
+ * judges fading creases too (the public rocker arm at 512 kept one of 12.9 degrees).
+ * Specks stay unmeasured for the rules that join them (cornerSpurMerge()). */
+inline void
+addFadingCreaseTurns(const TopologyGraph& graph,
+                     const std::vector<FeatureClass>& classes,
+                     const std::vector<Eigen::Vector3d>& points,
+                     const std::vector<std::uint32_t>& labels,
+                     double cell_size,
+                     double window_cells,
+                     int threads,
+                     std::vector<CreaseAngle>& angles)
+{
+  std::vector<std::uint32_t> edges;
+  for (std::uint32_t id = 1; id <= graph.size() && id <= angles.size(); ++id)
+    if (graph.node(id).feature_class == FeatureClass::kEdge &&
+        std::isnan(angles[id - 1].degrees) &&
+        graph.node(id).points >= CreaseAngleParameters::kMinWideEdgePoints &&
+        graph.facesOfEdge(id).size() == 1)
+      edges.push_back(id);
+  if (edges.empty())
+    return;
+  const std::vector<CreaseAngle> fading = measureFadingCreases(
+    points, labels, classes, edges, cell_size, window_cells, threads);
+  for (const std::uint32_t e : edges)
+    if (std::isfinite(fading[e - 1].degrees))
+      angles[e - 1] = fading[e - 1];
+}
+
 /** \brief GraphNode::crease_angle of each edge still without one that has one face on
  * both sides (a crease fading into it), from the output's points and labels
- * (measureFadingCreases(); for the graph only, after the clean-up). */
+ * (measureFadingCreases(); for the graph only, after the clean-up: a fading crease
+ * the clean-up made, or a speck that addFadingCreaseTurns() left out). */
 template <typename Cloud>
 void
 setFadingCreaseTurns(TopologyGraph& graph,
@@ -418,6 +450,13 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::mergeShallowCreases(
     results.segmentation.regionClasses(), run.crease_angles.window_cells,
     run.crease_angles.min_crease_angle, run.visibility.threads);
   std::vector<CreaseAngle> angles = std::move(measures.angles);
+  const auto addFading = [&]() {
+    detail::addFadingCreaseTurns(results.graph, results.segmentation.regionClasses(),
+                                 points, labels, results.band.grid().cell_size,
+                                 run.crease_angles.window_cells, run.visibility.threads,
+                                 angles);
+  };
+  addFading();
   const std::vector<CreaseAngle>& contacts = measures.contacts;
   std::vector<std::uint32_t> into = shallowCreaseMerge(
     results.graph, angles, contacts, run.crease_angles.min_crease_angle);
@@ -428,6 +467,7 @@ VisibilityFeatureEstimation<PointInT, PointOutT>::mergeShallowCreases(
   while (!applyRegionMerge(results, run, output, into).empty()) {
     readLabels();
     angles = measure();
+    addFading();
     into =
       shallowCreaseMerge(results.graph, angles, {}, run.crease_angles.min_crease_angle);
   }

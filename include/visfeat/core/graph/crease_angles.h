@@ -170,10 +170,11 @@ std::vector<CreaseAngle> measureCreaseAngles(const std::vector<Eigen::Vector3d>&
  * least-squares plane); those face points, split by the plane through the sample
  * point along the line and the normal, are the two sides, and the turn is that
  * between their planes across the line (at least kMinSidePoints a side). The edge's
- * turn is the median over its samples; CreaseAngle::faces is that face twice. For the
- * graph only: the median of a crease that fades is not a criterion, and the estimator
- * measures these edges after the clean-up (GraphNode::crease_angle). points, labels,
- * classes, cell_size, window_cells and threads as measureCreaseAngles().
+ * turn is the median over its samples; CreaseAngle::faces is that face twice. The
+ * estimator adds these turns to the minimum crease angle's measures (edges of at least
+ * kMinWideEdgePoints points) and measures the fading creases left after the clean-up
+ * for the graph (GraphNode::crease_angle). points, labels, classes, cell_size,
+ * window_cells and threads as measureCreaseAngles().
  * \return per region (index label - 1, size classes.size()), NaN but for the edges
  *         measured. */
 std::vector<CreaseAngle>

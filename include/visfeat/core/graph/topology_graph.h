@@ -39,9 +39,8 @@ struct GraphNode
   Eigen::Vector3d max{0.0, 0.0, 0.0};
   /** \brief Edges: the turn between the planes fitted to its two sides, degrees (0 =
    * flat, 90 = a right-angle crease; measureCreaseAngles(); for an edge with one face
-   * on both sides, a crease fading into it, measureFadingCreases(), which the minimum
-   * crease angle does not judge); NaN where not measured and for vertices and faces.
-   * Set by setCreaseAngle(). */
+   * on both sides, a crease fading into it, measureFadingCreases()); NaN where not
+   * measured and for vertices and faces. Set by setCreaseAngle(). */
   double crease_angle = std::numeric_limits<double>::quiet_NaN();
 };
 
