@@ -38,6 +38,25 @@ splitCornerDistance(const VoxelBand& band, const SegmentationParameters& segment
   return 2.0 * segmentation.vertex_reach * band.grid().cell_size;
 }
 
+/** \brief The edges among labels 1..regions without a turn (turn_of(label) not
+ * finite) that hold at least min_points points and have one face on both sides:
+ * creases fading into a face (measureFadingCreases()). */
+template <typename TurnOf>
+std::vector<std::uint32_t>
+fadingCreases(const TopologyGraph& graph,
+              std::size_t regions,
+              std::uint64_t min_points,
+              const TurnOf& turn_of)
+{
+  std::vector<std::uint32_t> edges;
+  for (std::uint32_t id = 1; id <= graph.size() && id <= regions; ++id)
+    if (graph.node(id).feature_class == FeatureClass::kEdge &&
+        !std::isfinite(turn_of(id)) && graph.node(id).points >= min_points &&
+        graph.facesOfEdge(id).size() == 1)
+      edges.push_back(id);
+  return edges;
+}
+
 /** \brief Into angles (per region, measureCreaseAngles()), the turn of each edge of at
  * least kMinWideEdgePoints points without one that has one face on both sides (a
  * crease fading into it; measureFadingCreases()), so that the minimum crease angle
@@ -53,13 +72,9 @@ addFadingCreaseTurns(const TopologyGraph& graph,
                      int threads,
                      std::vector<CreaseAngle>& angles)
 {
-  std::vector<std::uint32_t> edges;
-  for (std::uint32_t id = 1; id <= graph.size() && id <= angles.size(); ++id)
-    if (graph.node(id).feature_class == FeatureClass::kEdge &&
-        std::isnan(angles[id - 1].degrees) &&
-        graph.node(id).points >= CreaseAngleParameters::kMinWideEdgePoints &&
-        graph.facesOfEdge(id).size() == 1)
-      edges.push_back(id);
+  const std::vector<std::uint32_t> edges =
+    fadingCreases(graph, angles.size(), CreaseAngleParameters::kMinWideEdgePoints,
+                  [&](std::uint32_t id) { return angles[id - 1].degrees; });
   if (edges.empty())
     return;
   const std::vector<CreaseAngle> fading = measureFadingCreases(
@@ -82,12 +97,9 @@ setFadingCreaseTurns(TopologyGraph& graph,
                      const CreaseAngleParameters& parameters,
                      int threads)
 {
-  std::vector<std::uint32_t> edges;
-  for (std::uint32_t id = 1; id <= graph.size() && id <= classes.size(); ++id)
-    if (graph.node(id).feature_class == FeatureClass::kEdge &&
-        !std::isfinite(graph.node(id).crease_angle) &&
-        graph.facesOfEdge(id).size() == 1)
-      edges.push_back(id);
+  const std::vector<std::uint32_t> edges =
+    fadingCreases(graph, classes.size(), 0,
+                  [&](std::uint32_t id) { return graph.node(id).crease_angle; });
   if (edges.empty())
     return;
   std::vector<Eigen::Vector3d> points(output.size());
